@@ -10,6 +10,7 @@
 
 #include <CGAL/number_utils.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/ISM_reconstruction_3/internal/Block_array.h>
 
 #include <algorithm>
 #include <array>
@@ -76,11 +77,17 @@ private:
 
   Geom_traits m_gt;
   std::vector<Point_3> m_points;
-  std::vector<std::array<Vertex_index, 4> > m_vertices;
-  std::vector<std::array<Cell_index, 4> > m_neighbors;  // valid for leaves only
-  std::vector<Cell_index> m_parent;
-  std::vector<Cell_index> m_first_child;                 // children are consecutive
-  std::vector<std::uint8_t> m_level_and_parity;
+  // One record per cell, so that creating a cell is one append; the level byte lives
+  // apart to keep the record at 40 bytes.
+  struct Cell
+  {
+    std::array<Vertex_index, 4> vertices;
+    std::array<Cell_index, 4> neighbors;  // valid for leaves only
+    Cell_index parent;
+    Cell_index first_child;               // children are consecutive; -1 for a leaf
+  };
+  ISM_reconstruction_3::internal::Block_array<Cell> m_cells;
+  ISM_reconstruction_3::internal::Block_array<std::uint8_t> m_level_and_parity;
   std::size_t m_number_of_leaves = 0;
 
   // scratch buffers of bisect(), kept to avoid allocations on the hot path
@@ -122,33 +129,33 @@ public:
   /// \name Access
   /// @{
   const Geom_traits& geom_traits() const { return m_gt; }
-  std::size_t number_of_cells() const { return m_vertices.size(); }
+  std::size_t number_of_cells() const { return m_cells.size(); }
   std::size_t number_of_leaves() const { return m_number_of_leaves; }
   std::size_t number_of_vertices() const { return m_points.size(); }
 
   const Point_3& point(Vertex_index v) const { return m_points[v]; }
   const std::vector<Point_3>& points() const { return m_points; }
 
-  bool is_leaf(Cell_index c) const { return m_first_child[c] < 0; }
+  bool is_leaf(Cell_index c) const { return m_cells[c].first_child < 0; }
   int level(Cell_index c) const { return m_level_and_parity[c] & ~parity_bit; }
   /// the parent of `c`, `-1` for the 6 roots (cells `0` to `5`)
-  Cell_index parent(Cell_index c) const { return m_parent[c]; }
+  Cell_index parent(Cell_index c) const { return m_cells[c].parent; }
   /// child `i` (`0` or `1`) of an inner cell; child 0 holds `vertex(c,0)`.
-  Cell_index child(Cell_index c, int i) const { return m_first_child[c] < 0 ? -1 : m_first_child[c] + i; }
-  Vertex_index vertex(Cell_index c, int i) const { return m_vertices[c][i]; }
-  const std::array<Vertex_index, 4>& vertices(Cell_index c) const { return m_vertices[c]; }
+  Cell_index child(Cell_index c, int i) const { return m_cells[c].first_child < 0 ? -1 : m_cells[c].first_child + i; }
+  Vertex_index vertex(Cell_index c, int i) const { return m_cells[c].vertices[i]; }
+  const std::array<Vertex_index, 4>& vertices(Cell_index c) const { return m_cells[c].vertices; }
 
   /// local index `k` such that the refinement edge of `c` is `(vertex(c,0), vertex(c,k))`
   static int refinement_index(int level) { return 3 - level % 3; }
   /// the refinement edge of `c`, as two vertex indices
   std::array<Vertex_index, 2> refinement_edge(Cell_index c) const
   {
-    return {{ m_vertices[c][0], m_vertices[c][refinement_index(level(c))] }};
+    return {{ m_cells[c].vertices[0], m_cells[c].vertices[refinement_index(level(c))] }};
   }
 
   /// the leaf sharing the face of leaf `c` opposite to its local vertex `i`,
   /// `-1` on the boundary of the box
-  Cell_index neighbor(Cell_index c, int i) const { return m_neighbors[c][i]; }
+  Cell_index neighbor(Cell_index c, int i) const { return m_cells[c].neighbors[i]; }
 
   /// `true` if the vertex order of `c` is positively oriented (CGAL's `orientation`).
   bool is_positively_oriented(Cell_index c) const { return (m_level_and_parity[c] & parity_bit) == 0; }
@@ -156,7 +163,7 @@ public:
   /// the four vertices of `c` ordered so that the tetrahedron is positively oriented
   std::array<Vertex_index, 4> positive_vertices(Cell_index c) const
   {
-    std::array<Vertex_index, 4> v = m_vertices[c];
+    std::array<Vertex_index, 4> v = m_cells[c].vertices;
     if(!is_positively_oriented(c))
       std::swap(v[2], v[3]);
     return v;
@@ -239,8 +246,7 @@ public:
     if(cells > double((std::numeric_limits<Cell_index>::max)()))
       throw std::length_error("Bisection_triangulation_3::refine_uniformly: level " + std::to_string(l) +
                               " needs more cells than the indices can hold");
-    m_vertices.reserve(std::size_t(cells)); m_neighbors.reserve(std::size_t(cells));
-    m_parent.reserve(std::size_t(cells)); m_first_child.reserve(std::size_t(cells));
+    m_cells.reserve(std::size_t(cells));
     m_level_and_parity.reserve(std::size_t(cells));
     m_points.reserve(std::size_t(std::ldexp(1., l) + 64));
     refine([](Cell_index) { return true; }, l);
@@ -254,9 +260,9 @@ public:
   /// `p` lies (points on the plane go to child 0).
   int child_side(Cell_index c, const Point_3& p) const
   {
-    const std::array<Vertex_index, 4>& v = m_vertices[c];
+    const std::array<Vertex_index, 4>& v = m_cells[c].vertices;
     const int k = refinement_index(level(c));
-    const Point_3& z = m_points[m_vertices[m_first_child[c]][k]];
+    const Point_3& z = m_points[m_cells[m_cells[c].first_child].vertices[k]];
     const int j1 = (k == 1) ? 2 : 1, j2 = (k == 3) ? 2 : 3;
     typename Geom_traits::Orientation_3 orientation = m_gt.orientation_3_object();
     const Orientation op = orientation(p, z, m_points[v[j1]], m_points[v[j2]]);
@@ -296,7 +302,7 @@ public:
     if(c < 0)
       throw std::out_of_range("Bisection_triangulation_3::locate: the point is outside the box");
     while(!is_leaf(c))
-      c = m_first_child[c] + child_side(c, p);
+      c = m_cells[c].first_child + child_side(c, p);
     return c;
   }
   /// @}
@@ -309,15 +315,15 @@ public:
   template <class OutputIterator>
   OutputIterator leaves_around_edge(Cell_index c, int i, int j, OutputIterator out) const
   {
-    const Vertex_index a = m_vertices[c][i], b = m_vertices[c][j];
+    const Vertex_index a = m_cells[c].vertices[i], b = m_cells[c].vertices[j];
     int others[2], n = 0;
     for(int l = 0; l < 4; ++l)
       if(l != i && l != j) others[n++] = l;
     *out++ = c;
     // Walk one way; if the ring is open (the edge is on the box boundary), walk the other way too.
-    if(walk_around_edge(c, a, b, m_vertices[c][others[0]], m_neighbors[c][others[1]], out))
+    if(walk_around_edge(c, a, b, m_cells[c].vertices[others[0]], m_cells[c].neighbors[others[1]], out))
       return out;
-    walk_around_edge(c, a, b, m_vertices[c][others[1]], m_neighbors[c][others[0]], out);
+    walk_around_edge(c, a, b, m_cells[c].vertices[others[1]], m_cells[c].neighbors[others[0]], out);
     return out;
   }
 
@@ -330,14 +336,14 @@ public:
     offsets.assign(number_of_vertices() + 1, 0);
     for(Cell_index c = 0; c < Cell_index(number_of_cells()); ++c)
       if(is_leaf(c))
-        for(Vertex_index v : m_vertices[c]) ++offsets[v + 1];
+        for(Vertex_index v : m_cells[c].vertices) ++offsets[v + 1];
     for(std::size_t v = 0; v < number_of_vertices(); ++v)
       offsets[v + 1] += offsets[v];
     cells.resize(offsets.back());
     std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
     for(Cell_index c = 0; c < Cell_index(number_of_cells()); ++c)
       if(is_leaf(c))
-        for(Vertex_index v : m_vertices[c]) cells[fill[v]++] = c;
+        for(Vertex_index v : m_cells[c].vertices) cells[fill[v]++] = c;
   }
 
   /*!
@@ -355,7 +361,7 @@ public:
     {
       ring.clear();
       for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
-        for(Vertex_index v : m_vertices[cells[i]])
+        for(Vertex_index v : m_cells[cells[i]].vertices)
           if(v > u) ring.push_back(v);
       std::sort(ring.begin(), ring.end());
       ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
@@ -377,12 +383,19 @@ public:
     return tets;
   }
 
+  /// Releases the spare capacity of the arrays (after the last refinement).
+  void shrink_to_fit()
+  {
+    m_points.shrink_to_fit();
+    m_cells.shrink_to_fit();
+    m_level_and_parity.shrink_to_fit();
+    std::vector<Cell_index>().swap(m_patch);
+  }
+
   /// Bytes held by the arrays of the triangulation (capacity, not size).
   std::size_t memory_usage() const
   {
-    return m_points.capacity() * sizeof(Point_3) + m_vertices.capacity() * sizeof(m_vertices[0]) +
-           m_neighbors.capacity() * sizeof(m_neighbors[0]) + m_parent.capacity() * sizeof(Cell_index) +
-           m_first_child.capacity() * sizeof(Cell_index) + m_level_and_parity.capacity();
+    return m_points.capacity() * sizeof(Point_3) + m_cells.memory_usage() + m_level_and_parity.memory_usage();
   }
   /// @}
 
@@ -439,7 +452,7 @@ private:
     // Face neighbours of the roots: two roots are adjacent when they share 3 vertices.
     for(Cell_index r = 0; r < 6; ++r)
       for(int i = 0; i < 4; ++i)
-        m_neighbors[r][i] = -1;
+        m_cells[r].neighbors[i] = -1;
     for(Cell_index r = 0; r < 6; ++r)
       for(Cell_index s = 0; s < 6; ++s)
         if(r != s)
@@ -448,23 +461,26 @@ private:
             // does s contain the face of r opposite i?
             int shared = 0;
             for(int l = 0; l < 4; ++l)
-              if(l != i && std::count(m_vertices[s].begin(), m_vertices[s].end(), m_vertices[r][l]))
+              if(l != i && std::count(m_cells[s].vertices.begin(), m_cells[s].vertices.end(), m_cells[r].vertices[l]))
                 ++shared;
-            if(shared == 3) m_neighbors[r][i] = s;
+            if(shared == 3) m_cells[r].neighbors[i] = s;
           }
     m_number_of_leaves = 6;
   }
 
+  // Grow the point array by 1.5x rather than the library's 2x (the cells live in blocks).
+  template <class Vector>
+  static void grow(Vector& v, std::size_t extra)
+  {
+    if(v.size() + extra > v.capacity())
+      v.reserve((std::max)(v.size() + extra, v.capacity() + v.capacity() / 2 + 16));
+  }
+
   Cell_index new_cell(const std::array<Vertex_index, 4>& v, Cell_index parent, std::uint8_t level_and_parity)
   {
-    if(m_vertices.size() >= std::size_t((std::numeric_limits<Cell_index>::max)()))
-      throw std::length_error("Bisection_triangulation_3: too many cells for 32-bit cell indices");
-    m_vertices.push_back(v);
-    m_neighbors.push_back({{-1, -1, -1, -1}});
-    m_parent.push_back(parent);
-    m_first_child.push_back(-1);
+    m_cells.push_back(Cell{v, {{-1, -1, -1, -1}}, parent, -1});
     m_level_and_parity.push_back(level_and_parity);
-    return Cell_index(m_vertices.size() - 1);
+    return Cell_index(m_cells.size() - 1);
   }
 
   bool same_edge(Cell_index c, Vertex_index a, Vertex_index b) const
@@ -484,7 +500,7 @@ private:
     {
       *out++ = t;
       // the vertex of t that is not a, b or x: cross the face opposite x next
-      const std::array<Vertex_index, 4>& v = m_vertices[t];
+      const std::array<Vertex_index, 4>& v = m_cells[t].vertices;
       int ix = -1;
       Vertex_index y = -1;
       for(int l = 0; l < 4; ++l)
@@ -493,7 +509,7 @@ private:
         else if(v[l] != a && v[l] != b) y = v[l];
       }
       if(ix < 0) return false;  // only on a deliberately non-conforming mesh
-      t = m_neighbors[t][ix];
+      t = m_cells[t].neighbors[ix];
       x = y;
     }
     return t == c;
@@ -527,16 +543,19 @@ private:
   {
     const Cell_index first = m_patch.front();
     const int k0 = refinement_index(level(first));
-    const Vertex_index a = m_vertices[first][0], b = m_vertices[first][k0];
+    const Vertex_index a = m_cells[first].vertices[0], b = m_cells[first].vertices[k0];
     if(m_points.size() >= std::size_t((std::numeric_limits<Vertex_index>::max)()))
       throw std::length_error("Bisection_triangulation_3: too many vertices for 32-bit vertex indices");
+    if(m_cells.size() + 2 * m_patch.size() >= std::size_t((std::numeric_limits<Cell_index>::max)()))
+      throw std::length_error("Bisection_triangulation_3: too many cells for 32-bit cell indices");
+    grow(m_points, 1);
     const Vertex_index z = Vertex_index(m_points.size());
     m_points.push_back(m_gt.construct_midpoint_3_object()(m_points[a], m_points[b]));
 
     // create the children
     for(Cell_index t : m_patch)
     {
-      const std::array<Vertex_index, 4> x = m_vertices[t];
+      const std::array<Vertex_index, 4> x = m_cells[t].vertices;
       const int l = level(t), k = refinement_index(l);
       const std::uint8_t parity = m_level_and_parity[t] & parity_bit;
       std::array<Vertex_index, 4> v0 = x, v1;
@@ -548,30 +567,30 @@ private:
       const std::uint8_t parity1 = (k % 2 == 1) ? std::uint8_t(parity ^ parity_bit) : parity;
       const Cell_index c0 = new_cell(v0, t, std::uint8_t((l + 1) | parity));
       new_cell(v1, t, std::uint8_t((l + 1) | parity1));
-      m_first_child[t] = c0;
+      m_cells[t].first_child = c0;
       ++m_number_of_leaves;
     }
 
     // relink: for each child, the face opposite its vertex at position i
     for(Cell_index t : m_patch)
     {
-      const std::array<Vertex_index, 4> x = m_vertices[t];
+      const std::array<Vertex_index, 4> x = m_cells[t].vertices;
       const int k = refinement_index(level(t));
-      const Cell_index c0 = m_first_child[t], c1 = c0 + 1;
+      const Cell_index c0 = m_cells[t].first_child, c1 = c0 + 1;
       for(int i = 0; i < 4; ++i)
       {
         // child 0 = x with x_k -> z
         Cell_index n0;
-        if(i == k)      n0 = relink_outer(m_neighbors[t][k], t, c0);   // old face opposite x_k
+        if(i == k)      n0 = relink_outer(m_cells[t].neighbors[k], t, c0);   // old face opposite x_k
         else if(i == 0) n0 = c1;                                       // the new inner face
-        else            n0 = child_holding(m_neighbors[t][i], x[0], non_conforming);
-        m_neighbors[c0][i] = n0;
+        else            n0 = child_holding(m_cells[t].neighbors[i], x[0], non_conforming);
+        m_cells[c0].neighbors[i] = n0;
         // child 1 = [x1..x_k, z, x_{k+1}..]: position i holds x_{i+1} (i<k), z (i=k), x_i (i>k)
         Cell_index n1;
-        if(i == k)          n1 = relink_outer(m_neighbors[t][0], t, c1); // old face opposite x_0
+        if(i == k)          n1 = relink_outer(m_cells[t].neighbors[0], t, c1); // old face opposite x_0
         else if(i == k - 1) n1 = c0;                                     // the face opposite x_k
-        else                n1 = child_holding(m_neighbors[t][i < k ? i + 1 : i], x[k], non_conforming);
-        m_neighbors[c1][i] = n1;
+        else                n1 = child_holding(m_cells[t].neighbors[i < k ? i + 1 : i], x[k], non_conforming);
+        m_cells[c1].neighbors[i] = n1;
       }
       on_bisect(t, c0, c1);
     }
@@ -582,7 +601,7 @@ private:
   {
     if(n >= 0)
       for(int s = 0; s < 4; ++s)
-        if(m_neighbors[n][s] == t) m_neighbors[n][s] = child;
+        if(m_cells[n].neighbors[s] == t) m_cells[n].neighbors[s] = child;
     return n;
   }
 
@@ -591,7 +610,7 @@ private:
   {
     if(n < 0) return -1;
     if(non_conforming && is_leaf(n)) return n;  // deliberately broken mesh: keep a stale link
-    return m_vertices[n][0] == v ? m_first_child[n] : m_first_child[n] + 1;
+    return m_cells[n].vertices[0] == v ? m_cells[n].first_child : m_cells[n].first_child + 1;
   }
 };
 
