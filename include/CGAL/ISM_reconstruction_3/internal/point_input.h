@@ -1,0 +1,141 @@
+// Copyright (c) 2026 ISM_reconstruction_3 developers.
+// This file is part of CGAL (www.cgal.org).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : ISM_reconstruction_3 developers
+
+#ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_INPUT_H
+#define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_INPUT_H
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace ISM_reconstruction_3 {
+namespace internal {
+
+typedef std::array<double, 3> Xyz;
+
+// Principal axes of a point set, computed on coordinates centred and scaled to O(1) so
+// that neither 1e30 nor 1e-30 coordinates overflow or underflow the covariance.
+struct Principal_axes
+{
+  Xyz centroid;
+  std::array<Xyz, 3> axis;        // unit eigenvectors, ascending eigenvalues
+  std::array<double, 3> variance; // eigenvalues, in the scaled units
+  double scale;                   // coordinates were divided by this
+};
+
+inline Principal_axes principal_axes(const std::vector<Xyz>& points)
+{
+  Principal_axes pa;
+  long double c[3] = {0, 0, 0};
+  for(const Xyz& p : points)
+    for(int d = 0; d < 3; ++d) c[d] += p[d];
+  for(int d = 0; d < 3; ++d) pa.centroid[d] = double(c[d] / points.size());
+  double scale = 0;
+  for(const Xyz& p : points)
+    for(int d = 0; d < 3; ++d) scale = (std::max)(scale, std::abs(p[d] - pa.centroid[d]));
+  pa.scale = scale > 0 ? scale : 1.;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for(const Xyz& p : points)
+  {
+    const Eigen::Vector3d q((p[0] - pa.centroid[0]) / pa.scale, (p[1] - pa.centroid[1]) / pa.scale,
+                            (p[2] - pa.centroid[2]) / pa.scale);
+    cov += q * q.transpose();
+  }
+  cov /= double(points.size());
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
+  for(int i = 0; i < 3; ++i)
+  {
+    pa.variance[i] = (std::max)(0., solver.eigenvalues()[i]);
+    for(int d = 0; d < 3; ++d) pa.axis[i][d] = solver.eigenvectors()(d, i);
+  }
+  return pa;
+}
+
+// Refuses, with a message, what cannot bound a volume: no points, non-finite
+// coordinates, too few distinct points, all points on a line or a plane.
+inline void check_point_set(const std::vector<Xyz>& points)
+{
+  if(points.empty())
+    throw std::invalid_argument("ISM reconstruction: the point set is empty");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int d = 0; d < 3; ++d)
+      if(!std::isfinite(points[i][d]))
+        throw std::invalid_argument("ISM reconstruction: point " + std::to_string(i) +
+                                    " has a NaN or infinite coordinate");
+  std::vector<Xyz> distinct = points;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  const std::size_t minimum = 10;
+  if(distinct.size() < minimum)
+    throw std::invalid_argument("ISM reconstruction: " + std::to_string(distinct.size()) +
+                                " distinct points (of " + std::to_string(points.size()) +
+                                "); at least " + std::to_string(minimum) + " are needed to bound a volume");
+  const Principal_axes pa = principal_axes(distinct);
+  const double largest = pa.variance[2];
+  if(pa.variance[1] <= 1e-12 * largest)
+    throw std::invalid_argument("ISM reconstruction: all points lie on a line; they cannot bound a volume");
+  if(pa.variance[0] <= 1e-12 * largest)
+    throw std::invalid_argument("ISM reconstruction: all points lie on a plane; they cannot bound a volume");
+}
+
+// The bounding cell (paper section 4): centred on the points, axes from PCA, scaled to
+// a parallelepiped around them with a margin. Each side is at least half the longest, so
+// that the tetrahedra stay within a 2:1 anisotropy.
+struct Oriented_box
+{
+  Xyz origin;
+  std::array<Xyz, 3> axis;  // full edge vectors
+  Xyz data_center;          // centre of the points' extent
+  double data_radius;       // half the diagonal of the points' extent
+};
+
+inline Oriented_box bounding_parallelepiped(const std::vector<Xyz>& points, double margin)
+{
+  const Principal_axes pa = principal_axes(points);
+  double lo[3], hi[3];
+  for(int i = 0; i < 3; ++i) { lo[i] = HUGE_VAL; hi[i] = -HUGE_VAL; }
+  for(const Xyz& p : points)
+    for(int i = 0; i < 3; ++i)
+    {
+      double t = 0;
+      for(int d = 0; d < 3; ++d) t += (p[d] - pa.centroid[d]) * pa.axis[i][d];
+      lo[i] = (std::min)(lo[i], t);
+      hi[i] = (std::max)(hi[i], t);
+    }
+  double longest = 0;
+  for(int i = 0; i < 3; ++i) longest = (std::max)(longest, hi[i] - lo[i]);
+  Oriented_box box;
+  box.origin = pa.centroid;
+  box.data_center = pa.centroid;
+  double diag2 = 0;
+  for(int i = 0; i < 3; ++i)
+  {
+    const double side = (std::max)(hi[i] - lo[i], 0.5 * longest) + 2 * margin * longest;
+    const double mid = 0.5 * (lo[i] + hi[i]);
+    for(int d = 0; d < 3; ++d)
+    {
+      box.axis[i][d] = side * pa.axis[i][d];
+      box.origin[d] += (mid - 0.5 * side) * pa.axis[i][d];
+      box.data_center[d] += mid * pa.axis[i][d];
+    }
+    diag2 += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  }
+  box.data_radius = 0.5 * std::sqrt(diag2);
+  return box;
+}
+
+} // namespace internal
+} // namespace ISM_reconstruction_3
+} // namespace CGAL
+
+#endif // CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_INPUT_H

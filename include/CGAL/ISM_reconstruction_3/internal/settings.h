@@ -1,0 +1,121 @@
+// Copyright (c) 2026 ISM_reconstruction_3 developers.
+// This file is part of CGAL (www.cgal.org).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : ISM_reconstruction_3 developers
+
+#ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_SETTINGS_H
+#define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_SETTINGS_H
+
+#include <CGAL/ISM_reconstruction_3/parameters.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace ISM_reconstruction_3 {
+
+/*!
+  \ingroup PkgISMReconstruction3Ref
+  All parameters of the method, with their defaults; `settings_from_parameters()` fills it
+  from named parameters. The defaults are the measured ones (see the user manual); the
+  paper's settings (`paper_settings(true)`) change only what the paper fixes differently.
+*/
+struct Settings
+{
+  int maximum_depth = 24;                 ///< deepest level of a cell (the paper's maximum level)
+  int min_points_per_cell = 6;            ///< fitting and subdivision need this many points (paper: 5 to 10)
+  double coplanarity_threshold = 0.;      ///< a cell whose coplanarity error is below this is not subdivided
+  double empty_cell_error = 0.05;         ///< eps_empty as a fraction of [eps_min, eps_max]
+  double initial_temperature = 15.;       ///< annealing, in units of the mean |H_e|
+  double cooling_factor = 0.98063;        ///< temperature ratio between sweeps (15 -> 0.3 in 200 sweeps)
+  int number_of_sweeps = 200;             ///< sweeps of the final annealing
+  long warm_start_interval = 0;           ///< bisections between topology passes during refinement; 0: whenever the leaves doubled; -1: none
+  std::uint64_t random_seed = 1;
+  unsigned int smoothing_iterations = 3;  ///< Taubin lambda/mu iterations on the output mesh
+  double smoothing_lambda = 0.5;
+  double smoothing_mu = -0.53;
+  bool clamp_box_boundary = true;         ///< hold the box boundary vertices outside while annealing
+  Distance_estimate distance_estimate = LOCAL_PLANE_DISTANCE;
+  double box_margin = 0.1;                ///< margin around the points, as a fraction of their largest extent
+  std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
+
+  /// The settings of the paper (section 4): squared nearest-point distance, no clamping
+  /// (the global sign is fixed afterwards from the box corners), topology every 1000
+  /// subdivisions, Taubin smoothing.
+  static Settings paper()
+  {
+    Settings s;
+    s.clamp_box_boundary = false;
+    s.distance_estimate = NEAREST_POINT_SQUARED_DISTANCE;
+    s.warm_start_interval = 1000;
+    s.min_points_per_cell = 8;
+    s.coplanarity_threshold = 1e-3;
+    return s;
+  }
+
+  /// \throws std::invalid_argument with a message naming the parameter if one is out of range
+  void check() const
+  {
+    auto fail = [](const std::string& name, const std::string& value, const char* range) {
+      throw std::invalid_argument("ISM reconstruction: parameter " + name + " = " + value + " is out of range " + range);
+    };
+    auto str = [](double v) { std::ostringstream os; os << v; return os.str(); };
+    if(maximum_depth < 1 || maximum_depth > 48) fail("maximum_depth", std::to_string(maximum_depth), "[1, 48]");
+    if(min_points_per_cell < 3 || min_points_per_cell > 1000000)
+      fail("min_points_per_cell", std::to_string(min_points_per_cell), "[3, 1000000]");
+    if(!(coplanarity_threshold >= 0 && coplanarity_threshold < 1. / 3))
+      fail("coplanarity_threshold", str(coplanarity_threshold), "[0, 1/3)");
+    if(!(empty_cell_error >= 0 && empty_cell_error <= 1)) fail("empty_cell_error", str(empty_cell_error), "[0, 1]");
+    if(!(initial_temperature > 0 && initial_temperature <= 1e6))
+      fail("initial_temperature", str(initial_temperature), "(0, 1e6]");
+    if(!(cooling_factor > 0 && cooling_factor <= 1)) fail("cooling_factor", str(cooling_factor), "(0, 1]");
+    if(number_of_sweeps < 1 || number_of_sweeps > 100000)
+      fail("number_of_sweeps", std::to_string(number_of_sweeps), "[1, 100000]");
+    if(warm_start_interval < -1) fail("warm_start_interval", std::to_string(warm_start_interval), "[-1, inf)");
+    if(smoothing_iterations > 10000) fail("smoothing_iterations", std::to_string(smoothing_iterations), "[0, 10000]");
+    if(!(std::abs(smoothing_lambda) <= 1)) fail("smoothing_lambda", str(smoothing_lambda), "[-1, 1]");
+    if(!(std::abs(smoothing_mu) <= 1)) fail("smoothing_mu", str(smoothing_mu), "[-1, 1]");
+    if(!(box_margin > 0 && box_margin <= 10)) fail("box_margin", str(box_margin), "(0, 10]");
+  }
+};
+
+/// Reads the named parameters into `Settings` (the paper's defaults when `paper_settings(true)`).
+template <class NamedParameters>
+Settings settings_from_parameters(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace inp = ISM_reconstruction_3::internal_np;
+  const bool paper = choose_parameter(get_parameter(np, inp::paper_settings), false);
+  const Settings d = paper ? Settings::paper() : Settings();
+  Settings s;
+  s.maximum_depth = choose_parameter(get_parameter(np, inp::maximum_depth), d.maximum_depth);
+  s.min_points_per_cell = choose_parameter(get_parameter(np, CGAL::internal_np::min_points_per_cell), d.min_points_per_cell);
+  s.coplanarity_threshold = choose_parameter(get_parameter(np, inp::coplanarity_threshold), d.coplanarity_threshold);
+  s.empty_cell_error = choose_parameter(get_parameter(np, inp::empty_cell_error), d.empty_cell_error);
+  s.initial_temperature = choose_parameter(get_parameter(np, inp::initial_temperature), d.initial_temperature);
+  s.cooling_factor = choose_parameter(get_parameter(np, inp::cooling_factor), d.cooling_factor);
+  s.number_of_sweeps = choose_parameter(get_parameter(np, inp::number_of_sweeps), d.number_of_sweeps);
+  s.warm_start_interval = choose_parameter(get_parameter(np, inp::warm_start_interval), d.warm_start_interval);
+  s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), d.random_seed);
+  s.smoothing_iterations = choose_parameter(get_parameter(np, inp::smoothing_iterations), d.smoothing_iterations);
+  s.smoothing_lambda = choose_parameter(get_parameter(np, inp::smoothing_lambda), d.smoothing_lambda);
+  s.smoothing_mu = choose_parameter(get_parameter(np, inp::smoothing_mu), d.smoothing_mu);
+  s.clamp_box_boundary = choose_parameter(get_parameter(np, inp::clamp_box_boundary), d.clamp_box_boundary);
+  s.distance_estimate = choose_parameter(get_parameter(np, inp::distance_estimate), d.distance_estimate);
+  s.box_margin = choose_parameter(get_parameter(np, inp::box_margin), d.box_margin);
+  s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  return s;
+}
+
+} // namespace ISM_reconstruction_3
+} // namespace CGAL
+
+#endif // CGAL_ISM_RECONSTRUCTION_3_INTERNAL_SETTINGS_H

@@ -1,0 +1,438 @@
+// Copyright (c) 2026 ISM_reconstruction_3 developers.
+// This file is part of CGAL (www.cgal.org).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : ISM_reconstruction_3 developers
+
+#ifndef CGAL_ISM_RECONSTRUCTION_FUNCTION_H
+#define CGAL_ISM_RECONSTRUCTION_FUNCTION_H
+
+#include <CGAL/Bisection_triangulation_3.h>
+#include <CGAL/ISM_reconstruction_3/internal/settings.h>
+#include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
+#include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_input.h>
+#include <CGAL/ISM_reconstruction_3/internal/distance_estimation.h>
+#include <CGAL/ISM_reconstruction_3/internal/topology_estimation.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Real_timer.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <queue>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgISMReconstruction3Ref
+
+\brief The implicit simplicial model (ISM) of a point set without normals: a binary
+multitriangulation of a box around the points with an in/out sign and a signed distance
+estimate at every vertex (paper section 4). `operator()(p)` is the piecewise linear
+function of eq. (1) with the identity reparametrisation: negative inside, positive
+outside, defined in the whole box.
+
+\cgalModels `ImplicitFunction` (as `Poisson_reconstruction_function`): it can be meshed by
+CGAL's surface mesher or Mesh_3 through `bounding_sphere()` and `get_inner_point()`.
+
+\tparam GeomTraits a model of `Kernel`
+*/
+template <class GeomTraits>
+class ISM_reconstruction_function
+{
+public:
+  /// \name Types
+  /// @{
+  typedef GeomTraits Geom_traits;
+  typedef typename Geom_traits::FT FT;
+  typedef typename Geom_traits::Point_3 Point;
+  typedef typename Geom_traits::Vector_3 Vector;
+  typedef typename Geom_traits::Sphere_3 Sphere;
+  typedef Bisection_triangulation_3<Geom_traits> Triangulation;
+  typedef typename Triangulation::Cell_index Cell_index;
+  typedef typename Triangulation::Vertex_index Vertex_index;
+  typedef ISM_reconstruction_3::Settings Settings;
+
+  /// What a run measured: the time of each stage (seconds) and the sizes reached.
+  struct Statistics
+  {
+    double refinement_time = 0, topology_time = 0, distance_time = 0;
+    std::size_t number_of_points = 0, number_of_leaves = 0, number_of_vertices = 0;
+    std::size_t number_of_topology_passes = 0, number_of_inside_vertices = 0;
+    int deepest_level = 0;
+    double final_energy = 0, all_outside_energy = 0;  ///< Ising energies; all-outside lower means the model failed
+  };
+  /// @}
+
+private:
+  typedef std::array<double, 3> Xyz;
+  Geom_traits m_gt;
+  std::vector<Xyz> m_points;
+  Settings m_settings;
+  std::unique_ptr<Triangulation> m_tr;
+  std::vector<signed char> m_sign;
+  std::vector<double> m_value;
+  std::vector<Xyz> m_vertex_xyz;  // double copy of the triangulation's points
+  Statistics m_stats;
+  Point m_inner_point;
+  Sphere m_bounding_sphere;
+
+public:
+  /// \name Creation
+  /// @{
+
+  /*!
+    Copies the points of `points` (through the `point_map` named parameter).
+    \throws std::invalid_argument if the range is empty, holds a NaN or infinite
+    coordinate, has fewer distinct points than a cell needs, or all its points lie on a
+    plane or a line (no closed surface can be reconstructed from them).
+  */
+  template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
+  explicit ISM_reconstruction_function(const PointRange& points,
+                                       const NamedParameters& np = parameters::default_values())
+  {
+    typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+    typename NP_helper::Const_point_map point_map = NP_helper::get_const_point_map(points, np);
+    m_gt = parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, internal_np::geom_traits));
+    m_points.reserve(points.size());
+    for(const auto& item : points)
+    {
+      const auto& p = get(point_map, item);
+      m_points.push_back({{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }});
+    }
+    ISM_reconstruction_3::internal::check_point_set(m_points);
+    m_stats.number_of_points = m_points.size();
+  }
+  /// @}
+
+  /*!
+    Runs the method: refinement with local fitting, topology estimation (Ising model by
+    simulated annealing), distance estimation. Named parameters: see
+    `ism_surface_reconstruction()`.
+    \return `false` if the `callback` cancelled the run.
+    \throws std::invalid_argument for a parameter out of range
+    \throws std::runtime_error if no inside region was found
+  */
+  template <class NamedParameters = parameters::Default_named_parameters>
+  bool compute_implicit_function(const NamedParameters& np = parameters::default_values())
+  {
+    return compute_implicit_function_with_settings(ISM_reconstruction_3::settings_from_parameters(np));
+  }
+
+  /// the same, from a `Settings` object
+  bool compute_implicit_function_with_settings(const Settings& settings)
+  {
+    settings.check();
+    m_settings = settings;
+    m_stats = Statistics{};
+    m_stats.number_of_points = m_points.size();
+    CGAL::Real_timer timer;
+    timer.start();
+    if(!refine())
+      return false;
+    m_stats.refinement_time = timer.time() - m_stats.topology_time;
+    if(!report(0.75)) return false;
+
+    timer.reset();
+    ISM_reconstruction_3::internal::Annealing_schedule final_schedule;
+    final_schedule.initial_temperature = m_settings.initial_temperature;
+    final_schedule.number_of_sweeps = m_settings.number_of_sweeps;
+    final_schedule.final_temperature =
+        m_settings.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
+    estimate_topology(final_schedule);
+    m_stats.topology_time += timer.time();
+    if(!report(0.9)) return false;
+
+    timer.reset();
+    m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, m_vertex_xyz, m_sign,
+                                                                  m_settings.distance_estimate);
+    m_stats.distance_time = timer.time();
+    find_inner_point();
+    return report(1.);
+  }
+
+  /// \name Evaluation
+  /// @{
+
+  /// F(p) by linear interpolation in the leaf holding `p`; outside the box, a positive value.
+  FT operator()(const Point& p) const
+  {
+    const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
+    if(!m_tr) return FT(1);
+    const Cell_index r = m_tr->locate_root(p);
+    if(r < 0)
+    {
+      const Xyz c = {{ to_double(m_bounding_sphere.center().x()), to_double(m_bounding_sphere.center().y()),
+                       to_double(m_bounding_sphere.center().z()) }};
+      return FT(std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) + (x[2] - c[2]) * (x[2] - c[2])) + 1e-9);
+    }
+    Cell_index c = r;
+    while(!m_tr->is_leaf(c))
+      c = m_tr->child(c, m_tr->child_side(c, p));
+    return FT(interpolate(c, x));
+  }
+
+  /// a sphere holding the points, inside which the function is meant to be meshed
+  Sphere bounding_sphere() const { return m_bounding_sphere; }
+  /// a point where the function is negative (the deepest inside vertex)
+  const Point& get_inner_point() const { return m_inner_point; }
+  /// @}
+
+  /// \name Access
+  /// @{
+  const Triangulation& triangulation() const
+  {
+    if(!m_tr) throw std::logic_error("ISM_reconstruction_function: compute_implicit_function() was not called");
+    return *m_tr;
+  }
+  /// the in/out sign of a vertex: -1 inside, +1 outside
+  int sign(Vertex_index v) const { return m_sign[v]; }
+  /// the value f(v) of a vertex: its sign times the estimated distance
+  double value(Vertex_index v) const { return m_value[v]; }
+  const std::vector<signed char>& signs() const { return m_sign; }
+  const std::vector<double>& values() const { return m_value; }
+  const Statistics& statistics() const { return m_stats; }
+  const Settings& settings() const { return m_settings; }
+  /// the input points (as doubles)
+  const std::vector<std::array<double, 3> >& input_points() const { return m_points; }
+  /// @}
+
+private:
+  bool report(double progress) const { return !m_settings.callback || m_settings.callback(progress); }
+
+  // --- refinement (paper Program 1): a priority queue of cells by coplanarity error
+  bool refine()
+  {
+    namespace I = ISM_reconstruction_3::internal;
+    const I::Oriented_box box = I::bounding_parallelepiped(m_points, m_settings.box_margin);
+    m_tr.reset(new Triangulation(Point(box.origin[0], box.origin[1], box.origin[2]),
+                                 Vector(box.axis[0][0], box.axis[0][1], box.axis[0][2]),
+                                 Vector(box.axis[1][0], box.axis[1][1], box.axis[1][2]),
+                                 Vector(box.axis[2][0], box.axis[2][1], box.axis[2][2]), m_gt));
+    m_bounding_sphere = Sphere(Point(box.data_center[0], box.data_center[1], box.data_center[2]),
+                               FT(box.data_radius * box.data_radius * 1.1025));
+    Triangulation& tr = *m_tr;
+    sync_vertices();
+    m_sign.assign(tr.number_of_vertices(), 1);
+
+    // each cell owns the contiguous range [m_range[c][0], m_range[c][1]) of m_order
+    m_order.resize(m_points.size());
+    for(std::size_t i = 0; i < m_points.size(); ++i) m_order[i] = std::uint32_t(i);
+    m_range.assign(6, {{0, 0}});
+    m_fit.assign(6, I::Plane_fit());
+    {
+      std::vector<std::vector<std::uint32_t> > by_root(6);
+      for(std::uint32_t i = 0; i < m_points.size(); ++i)
+      {
+        const Cell_index r = tr.locate_root(point_of(i));
+        by_root[r < 0 ? 0 : r].push_back(i);  // r < 0 cannot happen: the box holds every point
+      }
+      std::size_t k = 0;
+      for(int r = 0; r < 6; ++r)
+      {
+        m_range[r][0] = std::uint32_t(k);
+        for(std::uint32_t i : by_root[r]) m_order[k++] = i;
+        m_range[r][1] = std::uint32_t(k);
+      }
+    }
+    for(Cell_index r = 0; r < 6; ++r) fit(r, -1);
+
+    typedef std::pair<double, Cell_index> Entry;  // max-heap on eps; ties by index for determinism
+    std::priority_queue<Entry> queue;
+    for(Cell_index r = 0; r < 6; ++r) queue.push(Entry(m_fit[r].coplanarity_error, r));
+
+    long since_topology = 0;
+    std::size_t leaves_at_last_topology = tr.number_of_leaves();
+    ISM_reconstruction_3::internal::Annealing_schedule warm;
+    warm.initial_temperature = (std::min)(2., m_settings.initial_temperature);
+    warm.final_temperature = 0.3;
+    warm.number_of_sweeps = 30;
+    const std::size_t report_every = 4096;
+    std::size_t bisections = 0;
+
+    auto on_bisect = [&](Cell_index p, Cell_index c0, Cell_index c1) {
+      m_range.resize(tr.number_of_cells());
+      m_fit.resize(tr.number_of_cells());
+      const auto b = m_order.begin() + m_range[p][0], e = m_order.begin() + m_range[p][1];
+      const auto mid = std::partition(b, e, [&](std::uint32_t i) { return tr.child_side(p, point_of(i)) == 0; });
+      const std::uint32_t m = std::uint32_t(mid - m_order.begin());
+      m_range[c0] = {{ m_range[p][0], m }};
+      m_range[c1] = {{ m, m_range[p][1] }};
+      fit(c0, p);
+      fit(c1, p);
+      // the new midpoint takes a sign from its edge: the endpoints' if they agree,
+      // else the one on its side of the parent's plane (a warm start for annealing)
+      const int k = Triangulation::refinement_index(tr.level(p));
+      const Vertex_index z = tr.vertex(c0, k);
+      if(std::size_t(z) >= m_sign.size())
+      {
+        sync_vertices();
+        const Vertex_index a = tr.vertex(p, 0), bb = tr.vertex(p, k);
+        signed char s = m_sign[a];
+        if(m_sign[a] != m_sign[bb] && count(p) > 0)
+          s = m_fit[p].side(m_vertex_xyz[z]) == m_fit[p].side(m_vertex_xyz[a]) ? m_sign[a] : m_sign[bb];
+        m_sign.resize(tr.number_of_vertices(), s);
+      }
+      queue.push(Entry(m_fit[c0].coplanarity_error, c0));
+      queue.push(Entry(m_fit[c1].coplanarity_error, c1));
+      ++since_topology;
+      ++bisections;
+    };
+
+    while(!queue.empty())
+    {
+      const Cell_index c = queue.top().second;
+      queue.pop();
+      if(!tr.is_leaf(c) || stop(c))
+        continue;
+      tr.bisect(c, on_bisect);
+      // topology during refinement, warm-started: every k bisections (the paper), or
+      // whenever the number of leaves doubled (default)
+      const long k = m_settings.warm_start_interval;
+      if((k > 0 && since_topology >= k) || (k == 0 && tr.number_of_leaves() >= 2 * leaves_at_last_topology))
+      {
+        CGAL::Real_timer t;
+        t.start();
+        estimate_topology(warm);
+        m_stats.topology_time += t.time();
+        since_topology = 0;
+        leaves_at_last_topology = tr.number_of_leaves();
+      }
+      if(bisections >= report_every)
+      {
+        bisections = 0;
+        // progress: a rough guess from the number of leaves relative to the points
+        const double guess = double(tr.number_of_leaves()) / double(4 * m_points.size() + 64);
+        if(!report(0.7 * (std::min)(1., guess))) return false;
+      }
+    }
+    std::vector<std::uint32_t>().swap(m_order);
+    return true;
+  }
+
+  std::size_t count(Cell_index c) const { return m_range[c][1] - m_range[c][0]; }
+
+  Point point_of(std::uint32_t i) const { return Point(m_points[i][0], m_points[i][1], m_points[i][2]); }
+
+  // paper 4.1: cells with fewer points than the minimum inherit the parent's plane and error
+  void fit(Cell_index c, Cell_index parent)
+  {
+    if(count(c) >= std::size_t(m_settings.min_points_per_cell))
+    {
+      ISM_reconstruction_3::internal::Moments moments(m_points[m_order[m_range[c][0]]]);
+      for(std::uint32_t i = m_range[c][0]; i < m_range[c][1]; ++i) moments.add(m_points[m_order[i]]);
+      if(moments.fit(m_fit[c])) return;
+    }
+    m_fit[c] = parent >= 0 ? m_fit[parent] : ISM_reconstruction_3::internal::Plane_fit();
+  }
+
+  // the stop test: maximum level, minimum number of points, coplanarity error
+  bool stop(Cell_index c) const
+  {
+    return m_tr->level(c) >= m_settings.maximum_depth || count(c) < std::size_t(m_settings.min_points_per_cell) ||
+           m_fit[c].coplanarity_error < m_settings.coplanarity_threshold;
+  }
+
+  void sync_vertices()
+  {
+    for(std::size_t v = m_vertex_xyz.size(); v < m_tr->number_of_vertices(); ++v)
+    {
+      const Point& p = m_tr->point(Vertex_index(v));
+      m_vertex_xyz.push_back({{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }});
+    }
+  }
+
+  // paper 4.2: minimise the Ising energy over the leaf mesh
+  void estimate_topology(const ISM_reconstruction_3::internal::Annealing_schedule& schedule)
+  {
+    namespace I = ISM_reconstruction_3::internal;
+    sync_vertices();
+    m_sign.resize(m_tr->number_of_vertices(), 1);
+    I::Topology_input in;
+    in.empty_cell_error = m_settings.empty_cell_error;
+    const I::Coupling_graph graph = I::build_coupling_graph(*m_tr, m_vertex_xyz, m_fit,
+        [&](Cell_index c) { return count(c); }, in);
+    std::vector<char> clamped;
+    const std::vector<char> boundary = I::box_boundary_vertices(*m_tr);
+    if(m_settings.clamp_box_boundary)
+    {
+      clamped = boundary;
+      for(std::size_t v = 0; v < boundary.size(); ++v)
+        if(boundary[v]) m_sign[v] = 1;
+    }
+    m_stats.final_energy = I::anneal(graph, m_sign, clamped, schedule,
+                                     m_settings.random_seed + 0x9E3779B97F4A7C15ULL * m_stats.number_of_topology_passes);
+    ++m_stats.number_of_topology_passes;
+    // D is symmetric under S -> -S: the box boundary is outside (a no-op when clamped)
+    long boundary_sum = 0;
+    for(std::size_t v = 0; v < boundary.size(); ++v)
+      if(boundary[v]) boundary_sum += m_sign[v];
+    if(boundary_sum < 0)
+      for(signed char& s : m_sign) s = static_cast<signed char>(-s);
+    std::vector<signed char> outside(m_sign.size(), 1);
+    m_stats.all_outside_energy = I::ising_energy(graph, outside);
+    m_stats.number_of_leaves = m_tr->number_of_leaves();
+    m_stats.number_of_vertices = m_tr->number_of_vertices();
+    m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
+  }
+
+  void find_inner_point()
+  {
+    int deepest = 0;
+    for(Cell_index c = 0; c < Cell_index(m_tr->number_of_cells()); ++c) deepest = (std::max)(deepest, m_tr->level(c));
+    m_stats.deepest_level = deepest;
+    std::size_t best = 0;
+    for(std::size_t v = 1; v < m_value.size(); ++v)
+      if(m_value[v] < m_value[best]) best = v;
+    if(m_value.empty() || m_value[best] >= 0)
+      throw std::runtime_error("ISM reconstruction: no vertex was found inside the surface "
+                               "(the points may not sample a closed surface densely enough)");
+    m_inner_point = m_tr->point(Vertex_index(best));
+  }
+
+  double interpolate(Cell_index c, const Xyz& x) const
+  {
+    const auto v = m_tr->vertices(c);
+    const Xyz& a = m_vertex_xyz[v[0]];
+    double m[3][3], r[3];
+    for(int i = 0; i < 3; ++i)
+    {
+      for(int j = 0; j < 3; ++j) m[j][i] = m_vertex_xyz[v[i + 1]][j] - a[j];
+      r[i] = x[i] - a[i];
+    }
+    // barycentric coordinates by Cramer's rule
+    auto det = [](const double (&q)[3][3]) {
+      return q[0][0] * (q[1][1] * q[2][2] - q[1][2] * q[2][1]) - q[0][1] * (q[1][0] * q[2][2] - q[1][2] * q[2][0]) +
+             q[0][2] * (q[1][0] * q[2][1] - q[1][1] * q[2][0]);
+    };
+    const double d = det(m);
+    double w[4], sum = 0;
+    for(int i = 0; i < 3; ++i)
+    {
+      double q[3][3];
+      for(int a1 = 0; a1 < 3; ++a1)
+        for(int b1 = 0; b1 < 3; ++b1) q[a1][b1] = (b1 == i) ? r[a1] : m[a1][b1];
+      w[i + 1] = det(q) / d;
+      sum += w[i + 1];
+    }
+    w[0] = 1 - sum;
+    double f = 0;
+    for(int i = 0; i < 4; ++i) f += w[i] * m_value[v[i]];
+    return f;
+  }
+
+  std::vector<std::uint32_t> m_order;
+  std::vector<std::array<std::uint32_t, 2> > m_range;
+  std::vector<ISM_reconstruction_3::internal::Plane_fit> m_fit;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_ISM_RECONSTRUCTION_FUNCTION_H

@@ -1,0 +1,550 @@
+// Tests of the internal algorithms on flat arrays: Ising annealing, marching
+// tetrahedra, Taubin smoothing.
+
+#include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
+#include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
+#include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace internal = CGAL::ISM_reconstruction_3::internal;
+
+typedef std::array<double, 3> Point;
+typedef std::array<std::size_t, 3> Triangle;
+
+static int number_of_failures = 0;
+
+#define CHECK(cond, what)                                                        \
+  do {                                                                           \
+    if(!(cond)) {                                                                \
+      ++number_of_failures;                                                      \
+      std::cerr << "FAILED: " << what << "  [" #cond "] line " << __LINE__ << std::endl; \
+    }                                                                            \
+  } while(false)
+
+// ---------------------------------------------------------------------------
+// Graph helpers
+
+struct Edge { int u, v; double w; };
+
+internal::Coupling_graph graph_from_edges(std::size_t n, const std::vector<Edge>& edges)
+{
+  internal::Coupling_graph g;
+  g.offsets.assign(n + 1, 0);
+  for(const Edge& e : edges) { ++g.offsets[e.u + 1]; ++g.offsets[e.v + 1]; }
+  for(std::size_t v = 0; v < n; ++v) g.offsets[v + 1] += g.offsets[v];
+  g.adjacency.resize(g.offsets[n]);
+  g.weights.resize(g.offsets[n]);
+  std::vector<std::size_t> next(g.offsets.begin(), g.offsets.end() - 1);
+  for(const Edge& e : edges)
+  {
+    g.adjacency[next[e.u]] = e.v; g.weights[next[e.u]++] = e.w;
+    g.adjacency[next[e.v]] = e.u; g.weights[next[e.v]++] = e.w;
+  }
+  return g;
+}
+
+// Edges of an nx*ny*nz grid; `kuhn`: the 7 offsets in {0,1}^3 \ 0 (14 neighbours,
+// the edges of the 6-tetrahedra Kuhn triangulation), otherwise the 3 axis offsets.
+std::vector<std::pair<int, int> > grid_edges(int nx, int ny, int nz, bool kuhn)
+{
+  std::vector<std::pair<int, int> > edges;
+  auto id = [&](int i, int j, int k) { return (k * ny + j) * nx + i; };
+  for(int k = 0; k < nz; ++k)
+    for(int j = 0; j < ny; ++j)
+      for(int i = 0; i < nx; ++i)
+        for(int d = 1; d < 8; ++d)
+        {
+          const int di = d & 1, dj = (d >> 1) & 1, dk = (d >> 2) & 1;
+          if(!kuhn && di + dj + dk != 1) continue;
+          if(i + di >= nx || j + dj >= ny || k + dk >= nz) continue;
+          edges.emplace_back(id(i, j, k), id(i + di, j + dj, k + dk));
+        }
+  return edges;
+}
+
+bool on_grid_boundary(int v, int nx, int ny, int nz)
+{
+  const int i = v % nx, j = (v / nx) % ny, k = v / (nx * ny);
+  return i == 0 || j == 0 || i == nx - 1 || j == ny - 1 ||
+         (nz > 1 && (k == 0 || k == nz - 1));
+}
+
+std::vector<signed char> random_signs(std::size_t n, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::vector<signed char> s(n);
+  for(auto& x : s) x = (rng() & 1) ? 1 : -1;
+  return s;
+}
+
+void ferromagnet_test(int nx, int ny, int nz, const std::string& name)
+{
+  const std::size_t n = std::size_t(nx) * ny * nz;
+  std::vector<Edge> edges;
+  for(auto e : grid_edges(nx, ny, nz, false)) edges.push_back({e.first, e.second, -1.});
+  const internal::Coupling_graph g = graph_from_edges(n, edges);
+  std::vector<signed char> s = random_signs(n, 7);
+  std::vector<char> clamped(n, 0);
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_grid_boundary(int(v), nx, ny, nz)) { clamped[v] = 1; s[v] = -1; }
+  const double e = internal::anneal(g, s, clamped, internal::Annealing_schedule(), 42);
+  const bool all_minus = std::all_of(s.begin(), s.end(), [](signed char x) { return x == -1; });
+  CHECK(all_minus, name << ": ferromagnet with clamped -1 boundary does not end all -1");
+  CHECK(std::abs(e + double(edges.size())) < 1e-9, name << ": energy " << e << " != " << -double(edges.size()));
+}
+
+void planted_test()
+{
+  const int nx = 20, ny = 20, nz = 20;
+  const std::size_t n = std::size_t(nx) * ny * nz;
+  std::mt19937 rng(123);
+  std::uniform_real_distribution<double> mag(0.2, 1.8);
+  const std::vector<signed char> planted = random_signs(n, 99);
+  std::vector<Edge> edges;
+  double ground = 0.;
+  for(auto e : grid_edges(nx, ny, nz, true))
+  {
+    const double w = -mag(rng) * planted[e.first] * planted[e.second];
+    edges.push_back({e.first, e.second, w});
+    ground -= std::abs(w);
+  }
+  const internal::Coupling_graph g = graph_from_edges(n, edges);
+  std::vector<signed char> s = random_signs(n, 5);
+  std::vector<char> clamped(n, 0);
+  for(std::size_t v = 0; v < n; v += 97) { clamped[v] = 1; s[v] = planted[v]; }
+  const double e = internal::anneal(g, s, clamped, internal::Annealing_schedule(), 2024);
+  std::size_t wrong = 0;
+  for(std::size_t v = 0; v < n; ++v) if(s[v] != planted[v]) ++wrong;
+  CHECK(wrong == 0, "planted instance: " << wrong << " of " << n << " signs differ from the planted ones");
+  CHECK(std::abs(e - ground) < 1e-6 * std::abs(ground), "planted instance: energy " << e << " != ground " << ground);
+  CHECK(std::abs(e - internal::ising_energy(g, s)) < 1e-9 * std::abs(ground), "anneal() return value != ising_energy()");
+}
+
+void energy_test()
+{
+  std::mt19937 rng(3);
+  const std::size_t n = 300;
+  std::vector<Edge> edges;
+  std::uniform_int_distribution<int> vert(0, int(n) - 1);
+  std::uniform_real_distribution<double> w(-2., 2.);
+  std::set<std::pair<int, int> > seen;
+  while(edges.size() < 2000)
+  {
+    int a = vert(rng), b = vert(rng);
+    if(a == b) continue;
+    if(a > b) std::swap(a, b);
+    if(!seen.insert({a, b}).second) continue;
+    edges.push_back({a, b, w(rng)});
+  }
+  const internal::Coupling_graph g = graph_from_edges(n, edges);
+  const std::vector<signed char> s = random_signs(n, 11);
+  double brute = 0.;
+  for(const Edge& e : edges) brute += e.w * s[e.u] * s[e.v];
+  const double e = internal::ising_energy(g, s);
+  CHECK(std::abs(e - brute) < 1e-9 * (1. + std::abs(brute)), "ising_energy " << e << " != brute force " << brute);
+
+  // A short anneal never ends above a zero-temperature local minimum check:
+  // no single flip lowers the energy after the final pass.
+  std::vector<signed char> t = s;
+  const double ea = internal::anneal(g, t, {}, internal::Annealing_schedule(), 1);
+  bool local_min = true;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    double h = 0.;
+    for(std::size_t k = g.offsets[v]; k < g.offsets[v + 1]; ++k) h += g.weights[k] * t[g.adjacency[k]];
+    if(-2. * t[v] * h < -1e-12) local_min = false;
+  }
+  CHECK(local_min, "after anneal(), a single flip still lowers the energy");
+  CHECK(ea <= e, "anneal() raised the energy of a spin glass: " << ea << " > " << e);
+}
+
+// A frustrated instance (random-sign couplings on the Kuhn grid): sensitive to every
+// random number, so a good determinism test.
+internal::Coupling_graph spin_glass(int m, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> w(-1., 1.);
+  std::vector<Edge> edges;
+  for(auto e : grid_edges(m, m, m, true)) edges.push_back({e.first, e.second, w(rng)});
+  return graph_from_edges(std::size_t(m) * m * m, edges);
+}
+
+void determinism_test()
+{
+  const int m = 40;  // 64000 vertices: large enough to be split between threads
+  const internal::Coupling_graph g = spin_glass(m, 8);
+  const std::size_t n = g.number_of_vertices();
+  const std::vector<signed char> start = random_signs(n, 1);
+  std::vector<char> clamped(n, 0);
+  for(std::size_t v = 0; v < n; v += 50) clamped[v] = 1;
+  internal::Annealing_schedule sched;
+  sched.number_of_sweeps = 50;
+
+  std::vector<signed char> a = start, b = start, c = start;
+  const double ea = internal::anneal(g, a, clamped, sched, 77);
+  const double eb = internal::anneal(g, b, clamped, sched, 77);
+  CHECK(a == b && ea == eb, "same seed twice gives different results");
+  internal::anneal(g, c, clamped, sched, 78);
+  CHECK(a != c, "different seeds give identical results (suspicious)");
+  for(std::size_t v = 0; v < n; ++v)
+    if(clamped[v]) CHECK(a[v] == start[v], "clamped vertex " << v << " flipped");
+
+#ifdef CGAL_LINKED_WITH_TBB
+  std::vector<signed char> s1 = start, s2 = start;
+  double e1, e2;
+  {
+    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 1);
+    e1 = internal::anneal(g, s1, clamped, sched, 77);
+  }
+  {
+    tbb::global_control gc(tbb::global_control::max_allowed_parallelism, 2);
+    e2 = internal::anneal(g, s2, clamped, sched, 77);
+  }
+  CHECK(s1 == s2 && e1 == e2, "1 thread and 2 threads give different results");
+  CHECK(s1 == a, "TBB-limited run differs from the default run");
+  std::cout << "  determinism: 1 vs 2 TBB threads identical: " << (s1 == s2 ? "yes" : "NO") << std::endl;
+#else
+  std::cout << "  (TBB not linked: thread-count test skipped)" << std::endl;
+#endif
+}
+
+void degenerate_annealing_test()
+{
+  // empty graphs
+  {
+    internal::Coupling_graph g;
+    std::vector<signed char> s;
+    CHECK(internal::anneal(g, s, {}, internal::Annealing_schedule(), 1) == 0., "empty graph energy");
+    g.offsets.push_back(0);
+    CHECK(internal::anneal(g, s, std::vector<char>(), internal::Annealing_schedule(), 1) == 0., "empty graph (offsets {0}) energy");
+  }
+  // vertices without edges
+  {
+    internal::Coupling_graph g;
+    g.offsets.assign(5, 0);
+    std::vector<signed char> s = {1, -1, 1, 1};
+    const auto s0 = s;
+    CHECK(internal::anneal(g, s, {}, internal::Annealing_schedule(), 1) == 0., "edgeless graph energy");
+    CHECK(s == s0, "edgeless graph: signs changed");
+  }
+  // all-zero weights
+  {
+    std::vector<Edge> edges;
+    for(auto e : grid_edges(10, 10, 10, true)) edges.push_back({e.first, e.second, 0.});
+    const internal::Coupling_graph g = graph_from_edges(1000, edges);
+    std::vector<signed char> s = random_signs(1000, 4);
+    const auto s0 = s;
+    const double e = internal::anneal(g, s, {}, internal::Annealing_schedule(), 1);
+    CHECK(e == 0. && std::isfinite(e), "all-zero weights energy " << e);
+    CHECK(s == s0, "all-zero weights: signs changed");
+  }
+  // all clamped
+  {
+    const internal::Coupling_graph g = spin_glass(6, 2);
+    std::vector<signed char> s = random_signs(216, 4);
+    const auto s0 = s;
+    const double e = internal::anneal(g, s, std::vector<char>(216, 1), internal::Annealing_schedule(), 1);
+    CHECK(s == s0, "all clamped: signs changed");
+    CHECK(e == internal::ising_energy(g, s0), "all clamped: energy");
+  }
+  // no sweeps, only the zero-temperature pass; and a single sweep
+  {
+    const internal::Coupling_graph g = spin_glass(8, 3);
+    std::vector<signed char> s = random_signs(512, 4);
+    const double e0 = internal::ising_energy(g, s);
+    internal::Annealing_schedule sched;
+    sched.number_of_sweeps = 0;
+    const double e = internal::anneal(g, s, {}, sched, 1);
+    CHECK(e <= e0, "zero-temperature pass raised the energy");
+    sched.number_of_sweeps = 1;
+    sched.final_zero_temperature_pass = false;
+    const double e1 = internal::anneal(g, s, {}, sched, 1);
+    CHECK(std::isfinite(e1), "single sweep energy not finite");
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Meshes
+
+double orientation_det(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const double a[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+  const double b[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+  const double c[3] = {p3[0] - p0[0], p3[1] - p0[1], p3[2] - p0[2]};
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+struct Tet_mesh
+{
+  std::vector<Point> points;
+  std::vector<std::array<int, 4> > tets;
+  double h;
+};
+
+// n^3 cubes on [-1,1]^3, each split into 6 Kuhn tetrahedra, positively oriented.
+// `shuffle`: then apply a random even permutation to each tet's corners.
+Tet_mesh kuhn_grid(int n, bool shuffle)
+{
+  Tet_mesh m;
+  m.h = 2. / n;
+  auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  for(int k = 0; k <= n; ++k)
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+        m.points.push_back({-1. + i * m.h, -1. + j * m.h, -1. + k * m.h});
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  const int even[12][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 3, 2, 0},
+                           {2, 0, 1, 3}, {2, 1, 3, 0}, {2, 3, 0, 1}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 2, 1, 0}};
+  std::mt19937 rng(5);
+  for(int k = 0; k < n; ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+        for(const auto& p : perms)
+        {
+          int c[3] = {i, j, k};
+          std::array<int, 4> t;
+          t[0] = id(c[0], c[1], c[2]);
+          for(int s = 0; s < 3; ++s)
+          {
+            ++c[p[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          if(orientation_det(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) < 0)
+            std::swap(t[2], t[3]);
+          if(shuffle)
+          {
+            const int* e = even[rng() % 12];
+            t = {t[e[0]], t[e[1]], t[e[2]], t[e[3]]};
+          }
+          m.tets.push_back(t);
+        }
+  return m;
+}
+
+struct Surface_check
+{
+  bool closed_manifold = true;
+  std::string error;
+  long euler = 0;
+  double volume = 0.;
+};
+
+Surface_check check_surface(const std::vector<Point>& pts, const std::vector<Triangle>& tris)
+{
+  Surface_check r;
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  for(const Triangle& t : tris)
+    for(int i = 0; i < 3; ++i)
+    {
+      if(t[i] == t[(i + 1) % 3]) { r.closed_manifold = false; r.error = "degenerate triangle"; }
+      ++directed[{t[i], t[(i + 1) % 3]}];
+    }
+  std::size_t undirected = 0;
+  for(const auto& d : directed)
+  {
+    if(d.second != 1) { r.closed_manifold = false; r.error = "directed edge used twice (inconsistent orientation)"; }
+    auto opp = directed.find({d.first.second, d.first.first});
+    if(opp == directed.end() || opp->second != 1) { r.closed_manifold = false; r.error = "boundary or non-manifold edge"; }
+    if(d.first.first < d.first.second) ++undirected;
+  }
+  // vertex links: the triangles around each vertex form a single cycle
+  std::vector<std::map<std::size_t, std::size_t> > link(pts.size());
+  std::vector<std::size_t> valence(pts.size(), 0);
+  for(const Triangle& t : tris)
+    for(int i = 0; i < 3; ++i)
+    {
+      link[t[i]][t[(i + 1) % 3]] = t[(i + 2) % 3];
+      ++valence[t[i]];
+    }
+  std::size_t used = 0;
+  for(std::size_t v = 0; v < pts.size(); ++v)
+  {
+    if(valence[v] == 0) continue;
+    ++used;
+    if(link[v].size() != valence[v]) { r.closed_manifold = false; r.error = "non-manifold vertex link"; continue; }
+    std::size_t start = link[v].begin()->first, cur = start, steps = 0;
+    do {
+      auto it = link[v].find(cur);
+      if(it == link[v].end()) break;
+      cur = it->second;
+      ++steps;
+    } while(cur != start && steps <= valence[v]);
+    if(cur != start || steps != valence[v]) { r.closed_manifold = false; r.error = "vertex link is not one cycle"; }
+  }
+  r.euler = long(used) - long(undirected) + long(tris.size());
+  for(const Triangle& t : tris)
+    r.volume += orientation_det({0., 0., 0.}, pts[t[0]], pts[t[1]], pts[t[2]]) / 6.;
+  return r;
+}
+
+std::vector<double> sample(const Tet_mesh& m, double (*f)(const Point&))
+{
+  std::vector<double> v(m.points.size());
+  for(std::size_t i = 0; i < v.size(); ++i)
+  {
+    double x = f(m.points[i]);
+    if(std::abs(x) < 1e-9) x = 1e-9;  // never 0
+    v[i] = x;
+  }
+  return v;
+}
+
+const Point sphere_center = {0.013, -0.021, 0.017};
+const double sphere_radius = 0.63;
+double sphere_value(const Point& p)
+{
+  const double dx = p[0] - sphere_center[0], dy = p[1] - sphere_center[1], dz = p[2] - sphere_center[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz) - sphere_radius;
+}
+const double torus_R = 0.55, torus_r = 0.22;
+double torus_value(const Point& p)
+{
+  const double q = std::sqrt(p[0] * p[0] + p[1] * p[1]) - torus_R;
+  return std::sqrt(q * q + p[2] * p[2]) - torus_r;
+}
+double two_spheres_value(const Point& p)
+{
+  const double a = std::sqrt((p[0] - 0.45) * (p[0] - 0.45) + p[1] * p[1] + p[2] * p[2]) - 0.35;
+  const double b = std::sqrt((p[0] + 0.45) * (p[0] + 0.45) + p[1] * p[1] + p[2] * p[2]) - 0.3;
+  return (std::min)(a, b);
+}
+
+void marching_test(const Tet_mesh& m, double (*f)(const Point&), const std::string& name,
+                   long expected_euler, double expected_volume)
+{
+  const std::vector<double> values = sample(m, f);
+  std::vector<Point> pts;
+  std::vector<Triangle> tris;
+  internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
+  const Surface_check c = check_surface(pts, tris);
+  CHECK(!tris.empty(), name << ": empty output");
+  CHECK(c.closed_manifold, name << ": not a closed oriented 2-manifold: " << c.error);
+  CHECK(c.euler == expected_euler, name << ": Euler characteristic " << c.euler << " != " << expected_euler);
+  CHECK(c.volume > 0., name << ": negative enclosed volume (inward orientation)");
+  const double rel = std::abs(c.volume - expected_volume) / expected_volume;
+  CHECK(rel < 0.03, name << ": volume " << c.volume << " vs " << expected_volume);
+  std::cout << "  " << name << ": " << pts.size() << " points, " << tris.size() << " triangles, chi = " << c.euler
+            << ", volume error " << 100. * rel << " %" << std::endl;
+
+  // one point per crossed edge, all distinct
+  std::set<std::pair<int, int> > crossed;
+  for(const auto& t : m.tets)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        if((values[t[i]] < 0) != (values[t[j]] < 0))
+          crossed.insert({(std::min)(t[i], t[j]), (std::max)(t[i], t[j])});
+  CHECK(crossed.size() == pts.size(), name << ": " << pts.size() << " points for " << crossed.size() << " crossed edges");
+  std::vector<Point> sorted = pts;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(), name << ": duplicated output points");
+
+  // deterministic
+  std::vector<Point> pts2;
+  std::vector<Triangle> tris2;
+  internal::marching_tetrahedra(m.points, m.tets, values, pts2, tris2);
+  CHECK(pts == pts2 && tris == tris2, name << ": output differs between two runs");
+}
+
+double radius_variance(const std::vector<Point>& pts, const Point& c)
+{
+  double s = 0., s2 = 0.;
+  for(const Point& p : pts)
+  {
+    const double r = std::sqrt((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2]));
+    s += r;
+    s2 += r * r;
+  }
+  const double n = double(pts.size());
+  return s2 / n - (s / n) * (s / n);
+}
+
+void taubin_test(const Tet_mesh& m)
+{
+  std::vector<Point> pts;
+  std::vector<Triangle> tris;
+  internal::marching_tetrahedra(m.points, m.tets, sample(m, sphere_value), pts, tris);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> noise(-0.25 * m.h, 0.25 * m.h);
+  for(Point& p : pts)
+  {
+    Point d = {p[0] - sphere_center[0], p[1] - sphere_center[1], p[2] - sphere_center[2]};
+    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double e = noise(rng);
+    for(int k = 0; k < 3; ++k) p[k] += e * d[k] / r;
+  }
+  const double var0 = radius_variance(pts, sphere_center);
+  const double vol0 = check_surface(pts, tris).volume;
+  std::vector<Point> smoothed = pts;
+  internal::taubin_smoothing(smoothed, tris, 10, 0.5, -0.53);
+  const double var1 = radius_variance(smoothed, sphere_center);
+  const double vol1 = check_surface(smoothed, tris).volume;
+  const double dvol = std::abs(vol1 - vol0) / vol0;
+  CHECK(var1 < 0.5 * var0, "taubin: radius variance " << var0 << " -> " << var1 << " not halved");
+  CHECK(dvol < 0.02, "taubin: volume changed by " << 100. * dvol << " %");
+  std::cout << "  taubin: radius std " << std::sqrt(var0) << " -> " << std::sqrt(var1) << ", volume change "
+            << 100. * dvol << " %" << std::endl;
+
+  // deterministic, default arguments, degenerate input
+  std::vector<Point> again = pts;
+  internal::taubin_smoothing(again, tris, 10);
+  CHECK(again == smoothed, "taubin: not deterministic / defaults differ from (0.5, -0.53)");
+  std::vector<Point> empty;
+  internal::taubin_smoothing(empty, {}, 3, 0.5, -0.53);
+  std::vector<Point> lone = {{1., 2., 3.}};
+  internal::taubin_smoothing(lone, {}, 3, 0.5, -0.53);
+  CHECK(lone[0] == Point({1., 2., 3.}), "taubin: isolated vertex moved");
+}
+
+int main()
+{
+  std::cout << "Ising annealing" << std::endl;
+  ferromagnet_test(48, 48, 1, "2D ferromagnet 48x48");
+  ferromagnet_test(16, 16, 16, "3D ferromagnet 16^3");
+  planted_test();
+  energy_test();
+  determinism_test();
+  degenerate_annealing_test();
+
+  std::cout << "Marching tetrahedra" << std::endl;
+  const double pi = 3.14159265358979323846;
+  const Tet_mesh grid = kuhn_grid(40, false);
+  marching_test(grid, sphere_value, "sphere", 2, 4. / 3. * pi * std::pow(sphere_radius, 3));
+  marching_test(grid, torus_value, "torus", 0, 2. * pi * pi * torus_R * torus_r * torus_r);
+  marching_test(grid, two_spheres_value, "two spheres", 4,
+                4. / 3. * pi * (std::pow(0.35, 3) + std::pow(0.3, 3)));
+  const Tet_mesh shuffled = kuhn_grid(24, true);
+  marching_test(shuffled, sphere_value, "sphere (shuffled even corner orders)", 2,
+                4. / 3. * pi * std::pow(sphere_radius, 3));
+  {
+    std::vector<Point> pts(1);
+    std::vector<Triangle> tris(1);
+    internal::marching_tetrahedra(grid.points, {}, std::vector<double>(grid.points.size(), 1.), pts, tris);
+    CHECK(pts.empty() && tris.empty(), "marching tetrahedra: no tets must give an empty output");
+  }
+
+  std::cout << "Taubin smoothing" << std::endl;
+  taubin_test(grid);
+
+  if(number_of_failures != 0)
+  {
+    std::cerr << number_of_failures << " check(s) FAILED" << std::endl;
+    return 1;
+  }
+  std::cout << "all internal algorithm tests passed" << std::endl;
+  return 0;
+}
