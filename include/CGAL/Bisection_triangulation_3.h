@@ -45,8 +45,8 @@ whatever floating point does.
 Cells and vertices are integers indexing flat arrays; a bisected cell stays in the
 tree as an inner cell, so cell indices are stable.
 
-\tparam GeomTraits a model of `Kernel` (`Point_3`, `Vector_3`, `Iso_cuboid_3`,
-`Orientation_3`, `Construct_midpoint_3`).
+\tparam GeomTraits a model of `BisectionTriangulationTraits_3` (`Point_3`, `Vector_3`,
+`Iso_cuboid_3`, `Orientation_3`, `Construct_midpoint_3`); every \cgal `Kernel` is one.
 */
 template <class GeomTraits>
 class Bisection_triangulation_3
@@ -54,10 +54,15 @@ class Bisection_triangulation_3
 public:
   /// \name Types
   /// @{
+  /*! the geometric traits class */
   typedef GeomTraits Geom_traits;
+  /// the number type of the coordinates
   typedef typename Geom_traits::FT FT;
+  /// the point type
   typedef typename Geom_traits::Point_3 Point_3;
+  /// the vector type
   typedef typename Geom_traits::Vector_3 Vector_3;
+  /// the axis-aligned box type
   typedef typename Geom_traits::Iso_cuboid_3 Iso_cuboid_3;
   /// index of a cell (tetrahedron) of the tree; `-1` means none
   typedef std::int32_t Cell_index;
@@ -128,21 +133,32 @@ public:
 
   /// \name Access
   /// @{
+  /*! the geometric traits */
   const Geom_traits& geom_traits() const { return m_gt; }
+  /// the number of cells of the tree, leaves and inner cells; cells are indexed from `0`
   std::size_t number_of_cells() const { return m_cells.size(); }
+  /// the number of leaves (the tetrahedra of the current mesh)
   std::size_t number_of_leaves() const { return m_number_of_leaves; }
+  /// the number of vertices; vertices are indexed from `0`, the 8 box corners first
   std::size_t number_of_vertices() const { return m_points.size(); }
 
+  /// the point of vertex `v`
   const Point_3& point(Vertex_index v) const { return m_points[v]; }
+  /// the points of all vertices, indexed by vertex
   const std::vector<Point_3>& points() const { return m_points; }
 
+  /// `true` if `c` has not been bisected
   bool is_leaf(Cell_index c) const { return m_cells[c].first_child < 0; }
+  /// the level of `c`: `0` for the 6 roots, one more than its parent's otherwise
   int level(Cell_index c) const { return m_level_and_parity[c] & ~parity_bit; }
   /// the parent of `c`, `-1` for the 6 roots (cells `0` to `5`)
   Cell_index parent(Cell_index c) const { return m_cells[c].parent; }
   /// child `i` (`0` or `1`) of an inner cell; child 0 holds `vertex(c,0)`.
   Cell_index child(Cell_index c, int i) const { return m_cells[c].first_child < 0 ? -1 : m_cells[c].first_child + i; }
+  /// vertex `i` (`0` to `3`) of `c`, in Maubach's order
   Vertex_index vertex(Cell_index c, int i) const { return m_cells[c].vertices[i]; }
+  /// the four vertices of `c`, in Maubach's order (not necessarily positively oriented,
+  /// see `positive_vertices()`)
   const std::array<Vertex_index, 4>& vertices(Cell_index c) const { return m_cells[c].vertices; }
 
   /// local index `k` such that the refinement edge of `c` is `(vertex(c,0), vertex(c,k))`
@@ -204,6 +220,7 @@ public:
     bisect_recursively(c, on_bisect);
   }
 
+  /// Bisects the leaf `c` conformingly, as `bisect(c, on_bisect)` without a callback.
   void bisect(Cell_index c) { bisect(c, [](Cell_index, Cell_index, Cell_index) {}); }
 
   /*!
@@ -231,6 +248,7 @@ public:
     }
   }
 
+  /// Refines as `refine(must_refine, max_level, on_bisect)` without a callback.
   template <class MustRefine>
   void refine(MustRefine&& must_refine, int max_level)
   {

@@ -71,25 +71,139 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
 /*!
   \ingroup PkgISMReconstruction3Ref
 
-  Reconstructs a closed, 2-manifold surface from `points` (no normals) by the in/out
-  function of the paper: BMT refinement with local PCA fitting, Ising topology estimation
-  by simulated annealing, distance estimation, marching tetrahedra and Taubin smoothing.
+  \brief reconstructs a closed, 2-manifold surface from `points`, which need no normals.
 
-  \tparam PointRange a model of `ConstRange` whose value type is a point or holds one through `point_map`
-  \tparam TriangleMesh a model of `MutableFaceGraph`
+  The method estimates the in/out function of the points (see the user manual,
+  \ref Chapter_ISM_Surface_Reconstruction): refinement of a binary multitriangulation of a
+  box around the points with local PCA fitting, topology estimation by an Ising model
+  solved by simulated annealing, distance estimation, then marching tetrahedra and Taubin
+  smoothing. It builds an `ISM_reconstruction_function` and meshes it with
+  `ISM_reconstruction_3::extract_surface()`. The output is closed and 2-manifold by
+  construction; it may have several components, and handles, as the sampled surface.
+
+  The package's own named parameters start the chain and \cgal's follow, as in
+  `parameters::maximum_depth(20).random_seed(7).point_map(pm)`.
+
+  \tparam PointRange a model of `ConstRange` whose value type is the key type of the
+          named parameter `point_map`
+  \tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
+          whose value type is constructible from three `double`
+  \tparam NamedParameters a sequence of named parameters
 
   \param points the input points
-  \param mesh receives the surface (appended to what it holds)
-  \param np an optional sequence of named parameters among the ones listed below:
-  `maximum_depth`, `min_points_per_cell`, `coplanarity_threshold`, `empty_cell_error`,
-  `initial_temperature`, `cooling_factor`, `number_of_sweeps`, `warm_start_interval`,
-  `random_seed`, `smoothing_iterations`, `smoothing_lambda`, `smoothing_mu`,
-  `clamp_box_boundary`, `distance_estimate`, `box_margin`, `paper_settings`, `callback`,
-  `point_map`, `geom_traits` (see the reference manual for their meaning and defaults).
+  \param mesh receives the surface (added to what it already holds)
+  \param np an optional sequence of named parameters among the ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{maximum_depth}
+      \cgalParamDescription{the deepest level of a cell of the binary multitriangulation (the paper's maximum level). Edges halve every 3 levels: cells of level 24 are 2^8 = 256 times smaller than the box.}
+      \cgalParamType{`int`, in [1, 48]}
+      \cgalParamDefault{`24`}
+    \cgalParamNEnd
+    \cgalParamNBegin{min_points_per_cell}
+      \cgalParamDescription{a cell with fewer points is not bisected, and inherits the plane and coplanarity error of its parent instead of fitting its own (the paper uses 5 to 10)}
+      \cgalParamType{`int`, in [3, 1000000]}
+      \cgalParamDefault{`6`}
+    \cgalParamNEnd
+    \cgalParamNBegin{coplanarity_threshold}
+      \cgalParamDescription{a cell whose coplanarity error l0 / (l0 + l1 + l2) (l0 <= l1 <= l2 the eigenvalues of the covariance of its points) is below this is not bisected; `0`: only the depth and the number of points stop the refinement}
+      \cgalParamType{`double`, in [0, 1/3)}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
+    \cgalParamNBegin{empty_cell_error}
+      \cgalParamDescription{the error eps_empty of empty cells as a fraction t of [eps_min, eps_max], the range of the errors of the non-empty cells: empty cells couple their vertices with the weight 1 - t}
+      \cgalParamType{`double`, in [0, 1]}
+      \cgalParamDefault{`0.05`}
+    \cgalParamNEnd
+    \cgalParamNBegin{initial_temperature}
+      \cgalParamDescription{the first temperature of the final annealing, in units of J, the mean absolute edge weight of the Ising energy}
+      \cgalParamType{`double`, in (0, 1e6]}
+      \cgalParamDefault{`15`}
+    \cgalParamNEnd
+    \cgalParamNBegin{cooling_factor}
+      \cgalParamDescription{the ratio between the temperatures of two consecutive sweeps of the final annealing (the default goes from 15 J to 0.3 J in 200 sweeps)}
+      \cgalParamType{`double`, in (0, 1]}
+      \cgalParamDefault{`0.98063`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_sweeps}
+      \cgalParamDescription{the number of sweeps of the final annealing, each visiting every vertex once}
+      \cgalParamType{`int`, in [1, 100000]}
+      \cgalParamDefault{`200`}
+    \cgalParamNEnd
+    \cgalParamNBegin{warm_start_interval}
+      \cgalParamDescription{the number of bisections between two topology passes during refinement; `0`: a pass whenever the number of leaves doubled; `-1`: no pass during refinement}
+      \cgalParamType{`long`, at least -1}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
+    \cgalParamNBegin{random_seed}
+      \cgalParamDescription{the seed of the annealing: the result depends only on the input and the seed, not on the number of threads}
+      \cgalParamType{`std::uint64_t`}
+      \cgalParamDefault{`1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{clamp_box_boundary}
+      \cgalParamDescription{if `true`, the vertices of the box boundary are held outside during annealing; if `false`, they anneal freely and the global sign is fixed afterwards (the paper)}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{minimum_island_fraction}
+      \cgalParamDescription{after the annealing, a cluster of inside vertices smaller than this fraction of the largest inside cluster is set outside, and a cluster of outside vertices that does not reach the box boundary and is smaller than that is set inside; `0`: keep all}
+      \cgalParamType{`double`, in [0, 1)}
+      \cgalParamDefault{`0.01`}
+    \cgalParamNEnd
+    \cgalParamNBegin{distance_estimate}
+      \cgalParamDescription{how the value of a vertex (its sign times a distance) is estimated}
+      \cgalParamType{`CGAL::ISM_reconstruction_3::Distance_estimate`}
+      \cgalParamDefault{`CGAL::ISM_reconstruction_3::LOCAL_PLANE_DISTANCE`}
+    \cgalParamNEnd
+    \cgalParamNBegin{box_margin}
+      \cgalParamDescription{the margin between the points and the box, as a fraction of the largest extent of the points}
+      \cgalParamType{`double`, in (0, 10]}
+      \cgalParamDefault{`0.1`}
+    \cgalParamNEnd
+    \cgalParamNBegin{smoothing_iterations}
+      \cgalParamDescription{the number of Taubin lambda/mu iterations on the output mesh; `0`: no smoothing}
+      \cgalParamType{`unsigned int`, in [0, 10000]}
+      \cgalParamDefault{`3`}
+    \cgalParamNEnd
+    \cgalParamNBegin{smoothing_lambda}
+      \cgalParamDescription{Taubin's lambda, the smoothing factor}
+      \cgalParamType{`double`, in [-1, 1]}
+      \cgalParamDefault{`0.5`}
+    \cgalParamNEnd
+    \cgalParamNBegin{smoothing_mu}
+      \cgalParamDescription{Taubin's mu, the inflating factor}
+      \cgalParamType{`double`, in [-1, 1]}
+      \cgalParamDefault{`-0.53`}
+    \cgalParamNEnd
+    \cgalParamNBegin{paper_settings}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{callback}
+      \cgalParamDescription{a function called with the progress, in [0, 1]; if it returns `false`, the reconstruction stops and the function returns `false`}
+      \cgalParamType{`std::function<bool(double)>`}
+      \cgalParamDefault{an empty function: no callback}
+    \cgalParamNEnd
+    \cgalParamNBegin{point_map}
+      \cgalParamDescription{a property map associating points to the elements of the point range}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
+      \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{a model of `ISMReconstructionTraits_3`}
+      \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
   \return `false` if the `callback` cancelled the run, `true` otherwise.
-  \throws std::invalid_argument for bad input or a parameter out of range
+  \throws std::invalid_argument for bad input (no points, a non-finite coordinate, too few
+          distinct points, all points on a plane or a line) or a parameter out of range
   \throws std::runtime_error if no inside region was found
+
+  \sa `ISM_reconstruction_function`
+  \sa `ISM_reconstruction_3::Settings`
 */
 template <class PointRange, class TriangleMesh, class NamedParameters = parameters::Default_named_parameters>
 bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,

@@ -47,6 +47,7 @@ enum clamp_box_boundary_t { clamp_box_boundary };
 enum distance_estimate_t { distance_estimate };
 enum box_margin_t { box_margin };
 enum paper_settings_t { paper_settings };
+enum minimum_island_fraction_t { minimum_island_fraction };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -83,6 +84,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(clamp_box_boundary)
 CGAL_ISM_ADD_NAMED_PARAMETER(distance_estimate)
 CGAL_ISM_ADD_NAMED_PARAMETER(box_margin)
 CGAL_ISM_ADD_NAMED_PARAMETER(paper_settings)
+CGAL_ISM_ADD_NAMED_PARAMETER(minimum_island_fraction)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

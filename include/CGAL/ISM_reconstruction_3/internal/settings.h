@@ -37,13 +37,18 @@ struct Settings
   double cooling_factor = 0.98063;        ///< temperature ratio between sweeps (15 -> 0.3 in 200 sweeps)
   int number_of_sweeps = 200;             ///< sweeps of the final annealing
   long warm_start_interval = 0;           ///< bisections between topology passes during refinement; 0: whenever the leaves doubled; -1: none
+  /// seed of the annealing: the result depends only on the input and the seed
   std::uint64_t random_seed = 1;
   unsigned int smoothing_iterations = 3;  ///< Taubin lambda/mu iterations on the output mesh
+  /// Taubin's lambda, the smoothing factor (> 0)
   double smoothing_lambda = 0.5;
+  /// Taubin's mu, the inflating factor (< -lambda)
   double smoothing_mu = -0.53;
   bool clamp_box_boundary = true;         ///< hold the box boundary vertices outside while annealing
+  /// how the value of a vertex is estimated (its sign comes from the Ising model)
   Distance_estimate distance_estimate = LOCAL_PLANE_DISTANCE;
   double box_margin = 0.1;                ///< margin around the points, as a fraction of their largest extent
+  double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
   /// The settings of the paper (section 4): squared nearest-point distance, no clamping
@@ -57,6 +62,7 @@ struct Settings
     s.warm_start_interval = 1000;
     s.min_points_per_cell = 8;
     s.coplanarity_threshold = 1e-3;
+    s.minimum_island_fraction = 0;
     return s;
   }
 
@@ -83,6 +89,8 @@ struct Settings
     if(!(std::abs(smoothing_lambda) <= 1)) fail("smoothing_lambda", str(smoothing_lambda), "[-1, 1]");
     if(!(std::abs(smoothing_mu) <= 1)) fail("smoothing_mu", str(smoothing_mu), "[-1, 1]");
     if(!(box_margin > 0 && box_margin <= 10)) fail("box_margin", str(box_margin), "(0, 10]");
+    if(!(minimum_island_fraction >= 0 && minimum_island_fraction < 1))
+      fail("minimum_island_fraction", str(minimum_island_fraction), "[0, 1)");
   }
 };
 
@@ -111,6 +119,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.clamp_box_boundary = choose_parameter(get_parameter(np, inp::clamp_box_boundary), d.clamp_box_boundary);
   s.distance_estimate = choose_parameter(get_parameter(np, inp::distance_estimate), d.distance_estimate);
   s.box_margin = choose_parameter(get_parameter(np, inp::box_margin), d.box_margin);
+  s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;
 }

@@ -98,6 +98,71 @@ std::vector<char> box_boundary_vertices(const Triangulation& tr)
   return boundary;
 }
 
+// Flips small islands of the in/out labelling: a cluster of inside vertices (connected by
+// leaf edges) smaller than `fraction` of the largest inside cluster becomes outside, and a
+// cluster of outside vertices that does not reach the box boundary and is smaller than that
+// becomes inside. Noise leaves such specks (tiny spurious components or cavities) that no
+// energy term distinguishes from real ones. Returns the number of clusters flipped.
+template <class Triangulation>
+std::size_t remove_islands(const Triangulation& tr, std::vector<signed char>& signs,
+                           const std::vector<char>& boundary, double fraction)
+{
+  const std::vector<std::array<int, 2> > edges = tr.edges();
+  const std::size_t n = signs.size();
+  std::vector<std::size_t> offsets(n + 1, 0);
+  for(const auto& e : edges) { ++offsets[e[0] + 1]; ++offsets[e[1] + 1]; }
+  for(std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+  std::vector<int> adjacency(offsets[n]);
+  {
+    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+    for(const auto& e : edges) { adjacency[fill[e[0]]++] = e[1]; adjacency[fill[e[1]]++] = e[0]; }
+  }
+  // clusters of equal sign
+  std::vector<int> cluster(n, -1);
+  std::vector<std::size_t> size;
+  std::vector<char> touches_boundary;
+  std::vector<int> stack;
+  for(std::size_t s = 0; s < n; ++s)
+  {
+    if(cluster[s] >= 0) continue;
+    const int id = int(size.size());
+    size.push_back(0);
+    touches_boundary.push_back(0);
+    cluster[s] = id;
+    stack.assign(1, int(s));
+    while(!stack.empty())
+    {
+      const int v = stack.back();
+      stack.pop_back();
+      ++size[id];
+      if(boundary[v]) touches_boundary[id] = 1;
+      for(std::size_t i = offsets[v]; i < offsets[v + 1]; ++i)
+        if(cluster[adjacency[i]] < 0 && signs[adjacency[i]] == signs[v])
+        {
+          cluster[adjacency[i]] = id;
+          stack.push_back(adjacency[i]);
+        }
+    }
+  }
+  std::vector<signed char> cluster_sign(size.size());
+  for(std::size_t v = 0; v < n; ++v) cluster_sign[cluster[v]] = signs[v];
+  std::size_t largest_inside = 0;
+  for(std::size_t c = 0; c < size.size(); ++c)
+    if(cluster_sign[c] < 0) largest_inside = (std::max)(largest_inside, size[c]);
+  const double threshold = fraction * double(largest_inside);
+  std::vector<char> flip(size.size(), 0);
+  std::size_t flipped = 0;
+  for(std::size_t c = 0; c < size.size(); ++c)
+    if(double(size[c]) < threshold && (cluster_sign[c] < 0 || !touches_boundary[c]))
+    {
+      flip[c] = 1;
+      ++flipped;
+    }
+  for(std::size_t v = 0; v < n; ++v)
+    if(flip[cluster[v]]) signs[v] = static_cast<signed char>(-signs[v]);
+  return flipped;
+}
+
 } // namespace internal
 } // namespace ISM_reconstruction_3
 } // namespace CGAL

@@ -1,0 +1,151 @@
+// End-to-end tests of the reconstruction on inputs with a known answer: analytic shapes
+// (sphere, torus, two spheres, nested spheres, trefoil tube) and real meshes from
+// libcgal-demo, sampled area-weighted with a fixed seed, without normals.
+// For each: closed and 2-manifold, components and genus of the truth, in/out agreement
+// (F and the output mesh) >= 99.5 % overall and 100 % farther than 1 % of the diagonal,
+// symmetric mean distance <= 0.5 % of the diagonal. Plus the API: named parameters,
+// Polyhedron_3 output, the paper's settings, cancellation, determinism, bad input.
+//
+// usage: test_reconstruction <directory holding bunny00.off, knot1.off, eight.off, ChineseDragon-10kv.off>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/ism_surface_reconstruction.h>
+#include <CGAL/property_map.h>
+#include "ism_evaluation.h"
+
+#include <iostream>
+#include <sstream>
+
+using namespace ISM_eval;
+static int failures = 0;
+#define CHECK(cond, what)                                                          \
+  do { if(!(cond)) { ++failures; std::cerr << "FAILED: " << what << "\n"; } } while(0)
+
+static void check_case(const std::string& name, const Mesh& truth, std::size_t n)
+{
+  const auto samples = sample_points(truth, n, 42, 0);
+  std::vector<Point_3> points;
+  for(const auto& s : samples) points.push_back(s.first);
+  CGAL::ISM_reconstruction_function<K> function(points);
+  const CGAL::ISM_reconstruction_3::Settings settings;
+  function.compute_implicit_function_with_settings(settings);
+  Mesh out;
+  CGAL::ISM_reconstruction_3::extract_surface(function, out, settings.smoothing_iterations, settings.smoothing_lambda,
+                                              settings.smoothing_mu);
+  const Topology t = topology(truth), o = topology(out);
+  const CGAL::Bbox_3 bb = bbox(truth);
+  const double diag = diagonal(bb);
+  const Inout_score f = inout_accuracy(truth, scaled_bbox(bb, 1.2), [&](const Point_3& p) { return function(p) < 0; },
+                                       20000, 0.01, 7);
+  const Inout_score m = inout_accuracy(truth, scaled_bbox(bb, 1.2), inside_oracle(out), 20000, 0.01, 7);
+  const Distance_score d = symmetric_distance(truth, out, 20000, 3);
+  std::cout << "| " << name << " | " << n << " | " << function.statistics().number_of_leaves << " | "
+            << o.components << " (" << t.components << ") | " << o.genus << " (" << t.genus << ") | "
+            << (o.closed && o.manifold) << " | " << 100 * f.overall << " / " << 100 * f.far << " | "
+            << 100 * m.overall << " / " << 100 * m.far << " | " << 100 * d.mean / diag << " | " << 100 * d.max / diag
+            << " |" << std::endl;
+  CHECK(o.closed && o.manifold, name + ": output closed and 2-manifold");
+  CHECK(o.components == t.components, name + ": number of components");
+  CHECK(o.genus == t.genus, name + ": genus");
+  CHECK(f.overall >= 0.995 && m.overall >= 0.995, name + ": in/out >= 99.5 %");
+  CHECK(f.far == 1. && m.far == 1., name + ": in/out 100 % farther than 1 % of the diagonal");
+  CHECK(d.mean <= 0.005 * diag, name + ": mean distance <= 0.5 % of the diagonal");
+}
+
+int main(int argc, char** argv)
+{
+  const std::string dir = argc > 1 ? argv[1] : "data/meshes";
+  std::cout << "| case | points | leaves | components (truth) | genus (truth) | closed+manifold | in/out F % (far) | "
+               "in/out mesh % (far) | mean dist % | max dist % |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  check_case("sphere", make_sphere(Point_3(0, 0, 0), 1, 48), 20000);
+  check_case("torus", make_torus(Point_3(0, 0, 0), 1, 0.35), 30000);
+  check_case("two spheres", make_two_spheres(Point_3(0, 0, 0), 1, Point_3(2.5, 0, 0), 0.8), 30000);
+  check_case("nested spheres", make_nested_spheres(Point_3(0, 0, 0), 1, 0.5), 30000);
+  check_case("trefoil tube", make_trefoil_tube(), 36000);
+  for(const std::string file : {"bunny00.off", "knot1.off", "eight.off", "ChineseDragon-10kv.off"})
+  {
+    Mesh truth;
+    if(!read_mesh(dir + "/" + file, truth)) { CHECK(false, "cannot read " + dir + "/" + file); continue; }
+    if(!CGAL::is_closed(truth)) close_holes(truth);
+    // the dragon has thin details: at 36k points they are undersampled (genus 2 measured), at
+    // 150k and at the paper's 437k points they are resolved
+    const std::size_t n = file == std::string("knot1.off") ? 100000 : file == std::string("ChineseDragon-10kv.off") ? 150000 : 36000;
+    check_case(file, truth, n);
+  }
+
+  // --- API: named parameters (ours first, CGAL's chained after), a Polyhedron_3 output,
+  // points held in pairs through a property map
+  {
+    const Mesh truth = make_torus(Point_3(0, 0, 0), 1, 0.4);
+    std::vector<std::pair<Point_3, int> > items;
+    for(const auto& s : sample_points(truth, 10000, 5, 0)) items.push_back(std::make_pair(s.first, 0));
+    CGAL::Polyhedron_3<K> poly;
+    const bool ok = CGAL::ism_surface_reconstruction(
+        items, poly,
+        CGAL::parameters::maximum_depth(20, CGAL::parameters::smoothing_iterations(2u))
+            .point_map(CGAL::First_of_pair_property_map<std::pair<Point_3, int> >())
+            .random_seed(7));
+    CHECK(ok && CGAL::is_closed(poly) && poly.size_of_facets() > 100, "named parameters + Polyhedron_3 output");
+    Mesh out;
+    CHECK(CGAL::ism_surface_reconstruction(items, out,
+                                           CGAL::parameters::paper_settings(true).point_map(
+                                               CGAL::First_of_pair_property_map<std::pair<Point_3, int> >())),
+          "the paper's settings run");
+    CHECK(CGAL::is_closed(out) && topology(out).genus == 1, "the paper's settings give a closed torus");
+
+    // cancellation through the callback
+    std::vector<Point_3> pts;
+    for(const auto& it : items) pts.push_back(it.first);
+    Mesh cancelled;
+    const bool finished = CGAL::ism_surface_reconstruction(
+        pts, cancelled, CGAL::parameters::callback(std::function<bool(double)>([](double) { return false; })));
+    CHECK(!finished && num_faces(cancelled) == 0, "the callback cancels and leaves the mesh empty");
+
+    // determinism: same input and seed, same output
+    Mesh a, b;
+    CGAL::ism_surface_reconstruction(pts, a, CGAL::parameters::random_seed(11));
+    CGAL::ism_surface_reconstruction(pts, b, CGAL::parameters::random_seed(11));
+    std::ostringstream sa, sb;
+    CGAL::IO::write_OFF(sa, a);
+    CGAL::IO::write_OFF(sb, b);
+    CHECK(sa.str() == sb.str(), "deterministic for a given seed");
+
+    // implicit function concept: inside point negative, far point positive, sphere holds the points
+    CGAL::ISM_reconstruction_function<K> f(pts);
+    f.compute_implicit_function();
+    CHECK(f(f.get_inner_point()) < 0, "get_inner_point() is inside");
+    CHECK(f(Point_3(10, 10, 10)) > 0, "far away is outside");
+    bool held = true;
+    for(const Point_3& p : pts)
+      held = held && CGAL::squared_distance(p, f.bounding_sphere().center()) <= f.bounding_sphere().squared_radius();
+    CHECK(held, "bounding_sphere() holds the points");
+  }
+
+  // --- bad input: clear exceptions (the robustness test covers many more cases)
+  auto message = [](auto run) -> std::string {
+    try { run(); } catch(const std::exception& e) { return e.what(); }
+    return "";
+  };
+  std::vector<Point_3> none, line, plane;
+  for(int i = 0; i < 100; ++i) { line.push_back(Point_3(i, 2 * i, 3 * i)); plane.push_back(Point_3(i % 10, i / 10, 0)); }
+  Mesh out;
+  const std::string e1 = message([&] { CGAL::ism_surface_reconstruction(none, out); });
+  const std::string e2 = message([&] { CGAL::ism_surface_reconstruction(line, out); });
+  const std::string e3 = message([&] { CGAL::ism_surface_reconstruction(plane, out); });
+  std::vector<Point_3> sphere_pts;
+  for(const auto& s : sample_points(make_sphere(Point_3(0, 0, 0), 1), 2000, 1, 0)) sphere_pts.push_back(s.first);
+  const std::string e4 = message([&] { CGAL::ism_surface_reconstruction(sphere_pts, out, CGAL::parameters::maximum_depth(60)); });
+  const std::string e5 = message([&] { CGAL::ism_surface_reconstruction(sphere_pts, out, CGAL::parameters::coplanarity_threshold(-1.)); });
+  std::cout << "messages:\n  " << e1 << "\n  " << e2 << "\n  " << e3 << "\n  " << e4 << "\n  " << e5 << "\n";
+  CHECK(e1.find("empty") != std::string::npos, "empty input refused");
+  CHECK(e2.find("line") != std::string::npos, "collinear input refused");
+  CHECK(e3.find("plane") != std::string::npos, "coplanar input refused");
+  CHECK(e4.find("maximum_depth") != std::string::npos, "depth 60 refused");
+  CHECK(e5.find("coplanarity_threshold") != std::string::npos, "negative threshold refused");
+  CHECK(num_faces(out) == 0, "a refused input leaves the mesh untouched");
+
+  if(failures == 0) std::cout << "all reconstruction tests passed\n";
+  return failures == 0 ? 0 : 1;
+}
