@@ -172,8 +172,16 @@ public:
     if(!report(0.9)) return false;
 
     timer.reset();
+    std::vector<char> near_surface(m_sign.size(), 0);
+    for(Cell_index c = 0; c < Cell_index(m_tr->number_of_cells()); ++c)
+      if(m_tr->is_leaf(c))
+      {
+        const auto& v = m_tr->vertices(c);
+        if(m_sign[v[0]] != m_sign[v[1]] || m_sign[v[0]] != m_sign[v[2]] || m_sign[v[0]] != m_sign[v[3]])
+          for(int l = 0; l < 4; ++l) near_surface[v[l]] = 1;
+      }
     m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, m_vertex_xyz, m_sign,
-                                                                  m_settings.distance_estimate);
+                                                                  m_settings.distance_estimate, near_surface);
     m_stats.distance_time = timer.time();
     find_inner_point();
     return report(1.);
@@ -284,9 +292,14 @@ private:
     const std::size_t report_every = 4096;
     std::size_t bisections = 0;
 
+    m_range.reserve(4 * m_points.size() / std::size_t(m_settings.min_points_per_cell) + 64);
+    m_fit.reserve(m_range.capacity());
     auto on_bisect = [&](Cell_index p, Cell_index c0, Cell_index c1) {
-      m_range.resize(tr.number_of_cells());
-      m_fit.resize(tr.number_of_cells());
+      if(m_range.size() < tr.number_of_cells())
+      {
+        m_range.resize(tr.number_of_cells());
+        m_fit.resize(tr.number_of_cells());
+      }
       const auto b = m_order.begin() + m_range[p][0], e = m_order.begin() + m_range[p][1];
       const auto mid = std::partition(b, e, [&](std::uint32_t i) { return tr.child_side(p, point_of(i)) == 0; });
       const std::uint32_t m = std::uint32_t(mid - m_order.begin());

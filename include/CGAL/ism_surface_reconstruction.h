@@ -22,7 +22,11 @@
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 
-/// Times of the surface extraction stages (seconds).
+/*!
+  \ingroup PkgISMReconstruction3Ref
+  \brief The times of the surface extraction stages, in seconds: `marching_time` and
+  `smoothing_time`.
+*/
 struct Extraction_statistics
 {
   double marching_time = 0, smoothing_time = 0;
@@ -30,9 +34,21 @@ struct Extraction_statistics
 
 /*!
   \ingroup PkgISMReconstruction3Ref
-  Extracts the zero level of `function` by marching tetrahedra on the leaves of its
-  triangulation, smooths it (Taubin lambda/mu), and writes it into `mesh`. Each crossed
-  edge gives one shared vertex, so the surface is closed and 2-manifold by construction.
+  \brief extracts the zero level of `function` by marching tetrahedra on the leaves of its
+  triangulation, smooths it (Taubin lambda/mu), and writes it into `mesh`.
+
+  Each crossed edge gives one shared vertex, so the surface is closed and 2-manifold by
+  construction. `ism_surface_reconstruction()` calls it after
+  `ISM_reconstruction_function::compute_implicit_function()`.
+
+  \tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
+          whose value type is constructible from three `double`
+  \param function a function on which `compute_implicit_function()` was called
+  \param mesh receives the surface (added to what it already holds)
+  \param smoothing_iterations the number of Taubin iterations, `0` for none
+  \param lambda Taubin's lambda, the smoothing factor
+  \param mu Taubin's mu, the inflating factor
+  \return the times of the marching tetrahedra and of the smoothing
 */
 template <class GeomTraits, class TriangleMesh>
 Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,

@@ -19,7 +19,11 @@
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 
-/// How the value at a vertex is estimated (its sign always comes from the Ising model).
+/*!
+  \ingroup PkgISMReconstruction3Ref
+  \brief How the value at a vertex is estimated (its sign always comes from the Ising
+  model); the named parameter `distance_estimate`.
+*/
 enum Distance_estimate
 {
   /// the paper's: the squared distance to the nearest data point (section 4.3)

@@ -35,7 +35,8 @@ namespace internal {
 // never zero, so marching tetrahedra sees no degenerate crossing.
 inline std::vector<double> estimate_distances(const std::vector<std::array<double, 3> >& points,
                                               const std::vector<std::array<double, 3> >& vertices,
-                                              const std::vector<signed char>& signs, Distance_estimate mode)
+                                              const std::vector<signed char>& signs, Distance_estimate mode,
+                                              const std::vector<char>& near_surface = std::vector<char>())
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef K::Point_3 P;
@@ -55,11 +56,15 @@ inline std::vector<double> estimate_distances(const std::vector<std::array<doubl
   const double tiny = 1e-9 * (diag > 0 ? diag : 1.);
   Tree tree(pts.begin(), pts.end());
   tree.build();  // before the parallel queries: the tree is then only read
-  const unsigned int k = mode == LOCAL_PLANE_DISTANCE ? (std::min<std::size_t>)(12, pts.size()) : 1;
+  // The plane fit only matters where marching tetrahedra interpolates: at the vertices of
+  // leaves with a sign change (`near_surface`, all vertices if empty); elsewhere one
+  // nearest point is enough to give F its magnitude.
+  const unsigned int k_plane = mode == LOCAL_PLANE_DISTANCE ? unsigned((std::min<std::size_t>)(12, pts.size())) : 1;
   std::vector<double> values(vertices.size());
 
   auto one = [&](std::size_t v) {
     const P q(vertices[v][0], vertices[v][1], vertices[v][2]);
+    const unsigned int k = (near_surface.empty() || near_surface[v]) ? k_plane : 1;
     Search search(tree, q, k);
     double nearest2 = HUGE_VAL, farthest2 = 0;
     Moments moments(vertices[v]);
@@ -75,7 +80,7 @@ inline std::vector<double> estimate_distances(const std::vector<std::array<doubl
     Plane_fit plane;
     // near the points, the distance to their fitted plane; farther than the
     // neighbourhood's radius the plane says nothing and the nearest point is used
-    if(mode == LOCAL_PLANE_DISTANCE && nearest2 <= 0.5 * farthest2 && moments.fit(plane))
+    if(mode == LOCAL_PLANE_DISTANCE && k > 1 && nearest2 <= 0.5 * farthest2 && moments.fit(plane))
       d = (std::min)(d, std::abs(plane.signed_distance(vertices[v])));
     values[v] = signs[v] * (std::max)(d, mode == NEAREST_POINT_SQUARED_DISTANCE ? tiny * tiny : tiny);
   };

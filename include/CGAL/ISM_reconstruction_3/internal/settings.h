@@ -23,7 +23,9 @@ namespace ISM_reconstruction_3 {
 
 /*!
   \ingroup PkgISMReconstruction3Ref
-  All parameters of the method, with their defaults; `settings_from_parameters()` fills it
+  \brief All parameters of the method, with their defaults.
+
+  `settings_from_parameters()` fills it
   from named parameters. The defaults are the measured ones (see the user manual); the
   paper's settings (`paper_settings(true)`) change only what the paper fixes differently.
 */
@@ -37,15 +39,15 @@ struct Settings
   double cooling_factor = 0.98063;        ///< temperature ratio between sweeps (15 -> 0.3 in 200 sweeps)
   int number_of_sweeps = 200;             ///< sweeps of the final annealing
   long warm_start_interval = 0;           ///< bisections between topology passes during refinement; 0: whenever the leaves doubled; -1: none
-  /// seed of the annealing: the result depends only on the input and the seed
+  /*! seed of the annealing: the result depends only on the input and the seed */
   std::uint64_t random_seed = 1;
   unsigned int smoothing_iterations = 3;  ///< Taubin lambda/mu iterations on the output mesh
-  /// Taubin's lambda, the smoothing factor (> 0)
+  /*! Taubin's lambda, the smoothing factor (> 0) */
   double smoothing_lambda = 0.5;
-  /// Taubin's mu, the inflating factor (< -lambda)
+  /*! Taubin's mu, the inflating factor (< -lambda) */
   double smoothing_mu = -0.53;
   bool clamp_box_boundary = true;         ///< hold the box boundary vertices outside while annealing
-  /// how the value of a vertex is estimated (its sign comes from the Ising model)
+  /*! how the value of a vertex is estimated (its sign comes from the Ising model) */
   Distance_estimate distance_estimate = LOCAL_PLANE_DISTANCE;
   double box_margin = 0.1;                ///< margin around the points, as a fraction of their largest extent
   double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all

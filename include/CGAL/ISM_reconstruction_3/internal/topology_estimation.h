@@ -11,6 +11,10 @@
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -53,32 +57,57 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
   std::vector<Cell_index> cells;
   tr.leaves_around_vertices(offsets, cells);
   const std::size_t n = tr.number_of_vertices();
+  // Vertices are cut into chunks built independently (in parallel with TBB) and then
+  // concatenated in order, so the graph is the same for any number of threads.
+  const std::size_t chunk = 4096, number_of_chunks = (n + chunk - 1) / chunk;
+  std::vector<Coupling_graph> parts(number_of_chunks);
+  auto build_chunk = [&](std::size_t k) {
+    Coupling_graph& part = parts[k];
+    const std::size_t b = k * chunk, e = (std::min)(n, b + chunk);
+    part.offsets.assign(e - b + 1, 0);
+    part.adjacency.reserve(15 * (e - b));
+    part.weights.reserve(15 * (e - b));
+    for(std::size_t u = b; u < e; ++u)
+    {
+      const std::size_t first = part.adjacency.size();
+      for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
+      {
+        const Cell_index c = cells[i];
+        const bool empty = count(c) == 0;
+        const double w = empty ? w_empty : weight(c);
+        const int su = empty ? 1 : fits[c].side(xyz[u]);
+        for(int l = 0; l < 4; ++l)
+        {
+          const int v = tr.vertex(c, l);
+          if(std::size_t(v) == u) continue;
+          const int sv = empty ? 1 : fits[c].side(xyz[v]);
+          const double h = -double(su * sv) * w;
+          std::size_t j = first;
+          while(j < part.adjacency.size() && part.adjacency[j] != v) ++j;
+          if(j == part.adjacency.size()) { part.adjacency.push_back(v); part.weights.push_back(h); }
+          else part.weights[j] += h;
+        }
+      }
+      part.offsets[u - b + 1] = part.adjacency.size();
+    }
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(std::size_t(0), number_of_chunks, build_chunk);
+#else
+  for(std::size_t k = 0; k < number_of_chunks; ++k) build_chunk(k);
+#endif
   Coupling_graph g;
   g.offsets.assign(n + 1, 0);
-  g.adjacency.reserve(14 * n);
-  g.weights.reserve(14 * n);
-  for(std::size_t u = 0; u < n; ++u)
+  std::size_t total = 0;
+  for(const Coupling_graph& part : parts) total += part.adjacency.size();
+  g.adjacency.reserve(total);
+  g.weights.reserve(total);
+  for(std::size_t k = 0; k < number_of_chunks; ++k)
   {
-    const std::size_t first = g.adjacency.size();
-    for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
-    {
-      const Cell_index c = cells[i];
-      const bool empty = count(c) == 0;
-      const double w = empty ? w_empty : weight(c);
-      const int su = empty ? 1 : fits[c].side(xyz[u]);
-      for(int l = 0; l < 4; ++l)
-      {
-        const int v = tr.vertex(c, l);
-        if(std::size_t(v) == u) continue;
-        const int sv = empty ? 1 : fits[c].side(xyz[v]);
-        const double h = -double(su * sv) * w;
-        std::size_t j = first;
-        while(j < g.adjacency.size() && g.adjacency[j] != v) ++j;
-        if(j == g.adjacency.size()) { g.adjacency.push_back(v); g.weights.push_back(h); }
-        else g.weights[j] += h;
-      }
-    }
-    g.offsets[u + 1] = g.adjacency.size();
+    const std::size_t base = g.adjacency.size();
+    for(std::size_t i = 1; i < parts[k].offsets.size(); ++i) g.offsets[k * chunk + i] = base + parts[k].offsets[i];
+    g.adjacency.insert(g.adjacency.end(), parts[k].adjacency.begin(), parts[k].adjacency.end());
+    g.weights.insert(g.weights.end(), parts[k].weights.begin(), parts[k].weights.end());
   }
   return g;
 }
