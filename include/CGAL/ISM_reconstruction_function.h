@@ -159,10 +159,13 @@ public:
 
     timer.reset();
     ISM_reconstruction_3::internal::Annealing_schedule final_schedule;
-    final_schedule.initial_temperature = m_settings.initial_temperature;
+    // after passes during refinement the final one refines their answer, "with a more
+    // gradual decrease in temperature" (paper 4.4); from scratch it starts hot
+    final_schedule.initial_temperature = m_stats.number_of_topology_passes > 0 ? m_settings.warm_start_temperature
+                                                                                : m_settings.initial_temperature;
     final_schedule.number_of_sweeps = m_settings.number_of_sweeps;
     final_schedule.final_temperature =
-        m_settings.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
+        final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
     estimate_topology(final_schedule);
     if(m_settings.minimum_island_fraction > 0)
       m_stats.number_of_flipped_islands = ISM_reconstruction_3::internal::remove_islands(
@@ -286,7 +289,7 @@ private:
     long since_topology = 0;
     std::size_t leaves_at_last_topology = tr.number_of_leaves();
     ISM_reconstruction_3::internal::Annealing_schedule warm;
-    warm.initial_temperature = (std::min)(2., m_settings.initial_temperature);
+    warm.initial_temperature = m_settings.warm_start_temperature;
     warm.final_temperature = 0.3;
     warm.number_of_sweeps = 30;
     const std::size_t report_every = 4096;

@@ -41,6 +41,7 @@ enum maximum_depth_t { maximum_depth };
 enum coplanarity_threshold_t { coplanarity_threshold };
 enum empty_cell_error_t { empty_cell_error };
 enum initial_temperature_t { initial_temperature };
+enum warm_start_temperature_t { warm_start_temperature };
 enum cooling_factor_t { cooling_factor };
 enum number_of_sweeps_t { number_of_sweeps };
 enum warm_start_interval_t { warm_start_interval };
@@ -78,6 +79,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(maximum_depth)
 CGAL_ISM_ADD_NAMED_PARAMETER(coplanarity_threshold)
 CGAL_ISM_ADD_NAMED_PARAMETER(empty_cell_error)
 CGAL_ISM_ADD_NAMED_PARAMETER(initial_temperature)
+CGAL_ISM_ADD_NAMED_PARAMETER(warm_start_temperature)
 CGAL_ISM_ADD_NAMED_PARAMETER(cooling_factor)
 CGAL_ISM_ADD_NAMED_PARAMETER(number_of_sweeps)
 CGAL_ISM_ADD_NAMED_PARAMETER(warm_start_interval)

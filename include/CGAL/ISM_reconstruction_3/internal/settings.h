@@ -35,9 +35,10 @@ struct Settings
   int min_points_per_cell = 6;            ///< fitting and subdivision need this many points (paper: 5 to 10)
   double coplanarity_threshold = 0.;      ///< a cell whose coplanarity error is below this is not subdivided
   double empty_cell_error = 0.05;         ///< eps_empty as a fraction of [eps_min, eps_max]
-  double initial_temperature = 15.;       ///< annealing, in units of the mean |H_e|
-  double cooling_factor = 0.98063;        ///< temperature ratio between sweeps (15 -> 0.3 in 200 sweeps)
-  int number_of_sweeps = 200;             ///< sweeps of the final annealing
+  double initial_temperature = 15.;       ///< annealing from scratch (the first pass), in units of the mean |H_e|
+  double warm_start_temperature = 3.;     ///< annealing from the previous signs (passes during refinement, and the final one after them)
+  double cooling_factor = 0.97700;        ///< temperature ratio between sweeps of the final annealing (3 -> 0.3 in 100 sweeps)
+  int number_of_sweeps = 100;             ///< sweeps of the final annealing
   long warm_start_interval = 0;           ///< bisections between topology passes during refinement; 0: whenever the leaves doubled; -1: none
   /*! seed of the annealing: the result depends only on the input and the seed */
   std::uint64_t random_seed = 1;
@@ -83,6 +84,8 @@ struct Settings
     if(!(empty_cell_error >= 0 && empty_cell_error <= 1)) fail("empty_cell_error", str(empty_cell_error), "[0, 1]");
     if(!(initial_temperature > 0 && initial_temperature <= 1e6))
       fail("initial_temperature", str(initial_temperature), "(0, 1e6]");
+    if(!(warm_start_temperature > 0 && warm_start_temperature <= 1e6))
+      fail("warm_start_temperature", str(warm_start_temperature), "(0, 1e6]");
     if(!(cooling_factor > 0 && cooling_factor <= 1)) fail("cooling_factor", str(cooling_factor), "(0, 1]");
     if(number_of_sweeps < 1 || number_of_sweeps > 100000)
       fail("number_of_sweeps", std::to_string(number_of_sweeps), "[1, 100000]");
@@ -111,6 +114,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.coplanarity_threshold = choose_parameter(get_parameter(np, inp::coplanarity_threshold), d.coplanarity_threshold);
   s.empty_cell_error = choose_parameter(get_parameter(np, inp::empty_cell_error), d.empty_cell_error);
   s.initial_temperature = choose_parameter(get_parameter(np, inp::initial_temperature), d.initial_temperature);
+  s.warm_start_temperature = choose_parameter(get_parameter(np, inp::warm_start_temperature), d.warm_start_temperature);
   s.cooling_factor = choose_parameter(get_parameter(np, inp::cooling_factor), d.cooling_factor);
   s.number_of_sweeps = choose_parameter(get_parameter(np, inp::number_of_sweeps), d.number_of_sweeps);
   s.warm_start_interval = choose_parameter(get_parameter(np, inp::warm_start_interval), d.warm_start_interval);
