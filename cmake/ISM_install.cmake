@@ -3,11 +3,11 @@
 # ISM_reconstruction_3::ISM_reconstruction_3, which brings CGAL, Eigen and TBB.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
-install(DIRECTORY include/CGAL DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS ISM_reconstruction_3 EXPORT ISM_reconstruction_3Targets)
+install(DIRECTORY include/CGAL DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT Devel)
+install(TARGETS ISM_reconstruction_3 EXPORT ISM_reconstruction_3Targets COMPONENT Devel)
 set(ISM_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/ISM_reconstruction_3)
 install(EXPORT ISM_reconstruction_3Targets NAMESPACE ISM_reconstruction_3::
-        DESTINATION ${ISM_CMAKE_DIR})
+        DESTINATION ${ISM_CMAKE_DIR} COMPONENT Devel)
 configure_package_config_file(cmake/ISM_reconstruction_3Config.cmake.in
   "${CMAKE_CURRENT_BINARY_DIR}/ISM_reconstruction_3Config.cmake"
   INSTALL_DESTINATION ${ISM_CMAKE_DIR})
@@ -16,4 +16,4 @@ write_basic_package_version_file(
   COMPATIBILITY SameMajorVersion ARCH_INDEPENDENT)
 install(FILES "${CMAKE_CURRENT_BINARY_DIR}/ISM_reconstruction_3Config.cmake"
               "${CMAKE_CURRENT_BINARY_DIR}/ISM_reconstruction_3ConfigVersion.cmake"
-        DESTINATION ${ISM_CMAKE_DIR})
+        DESTINATION ${ISM_CMAKE_DIR} COMPONENT Devel)
