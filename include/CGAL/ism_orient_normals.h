@@ -281,6 +281,8 @@ estimate_normals(const K& k, const Named_function_parameters<T, Tag, Base>& np)
 /*!
   \ingroup PkgISMReconstruction3Ref
 
+  \brief orients the normals of `points` by the in/out function of the points.
+
   Orients the normals of `points` by the in/out function of the points, the
   `ISM_reconstruction_function` computed from the same points (their normals are not used
   to compute it): a normal is flipped where the function decreases along it, so that every

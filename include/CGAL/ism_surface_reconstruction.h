@@ -132,19 +132,24 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0.05`}
     \cgalParamNEnd
     \cgalParamNBegin{initial_temperature}
-      \cgalParamDescription{the first temperature of the final annealing, in units of J, the mean absolute edge weight of the Ising energy}
+      \cgalParamDescription{the first temperature of an annealing from scratch (the first topology pass), in units of J, the mean absolute edge weight of the Ising energy}
       \cgalParamType{`double`, in (0, 1e6]}
       \cgalParamDefault{`15`}
     \cgalParamNEnd
+    \cgalParamNBegin{warm_start_temperature}
+      \cgalParamDescription{the first temperature, in units of J, of an annealing that starts from the previous signs: the passes during refinement, and the final pass after them}
+      \cgalParamType{`double`, in (0, 1e6]}
+      \cgalParamDefault{`3`}
+    \cgalParamNEnd
     \cgalParamNBegin{cooling_factor}
-      \cgalParamDescription{the ratio between the temperatures of two consecutive sweeps of the final annealing (the default goes from 15 J to 0.3 J in 200 sweeps)}
+      \cgalParamDescription{the ratio between the temperatures of two consecutive sweeps of the final annealing (the default goes from 3 J to 0.3 J in 100 sweeps)}
       \cgalParamType{`double`, in (0, 1]}
-      \cgalParamDefault{`0.98063`}
+      \cgalParamDefault{`0.977`}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_sweeps}
       \cgalParamDescription{the number of sweeps of the final annealing, each visiting every vertex once}
       \cgalParamType{`int`, in [1, 100000]}
-      \cgalParamDefault{`200`}
+      \cgalParamDefault{`100`}
     \cgalParamNEnd
     \cgalParamNBegin{warm_start_interval}
       \cgalParamDescription{the number of bisections between two topology passes during refinement; `0`: a pass whenever the number of leaves doubled; `-1`: no pass during refinement}
