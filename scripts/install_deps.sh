@@ -3,7 +3,7 @@
 # its tests, the tool and the benchmark need.
 set -euo pipefail
 pkgs=(build-essential cmake libcgal-dev libeigen3-dev libboost-dev libtet1.5-dev libtbb-dev
-      libcgal-demo python3-vtk9 python3-matplotlib python3-meshio python3-numpy doxygen)
+      libcgal-demo python3-vtk9 python3-matplotlib python3-meshio python3-numpy doxygen xvfb xauth)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,839 @@
+// ism_reconstruct: reconstructs a closed surface from points without normals with
+// ISM_reconstruction_3 (the in/out function of points on a binary multitriangulation).
+//
+//   ism_reconstruct [options] INPUT OUTPUT
+//
+// INPUT: .xyz/.pwn, .ply, .off (a mesh file's vertices are the points), .las when CGAL is
+// linked with LASlib. OUTPUT: .off, .ply or .obj. `--tets FILE` also writes the leaves of
+// the triangulation (.vtu or .mesh) with the per-vertex fields "sign" and "distance".
+// `--help` lists every parameter with its default.
+//
+// Exit codes: 0 success; 1 bad input (missing, empty, unreadable or malformed file, points
+// that cannot bound a volume, no inside found) or an output that cannot be written;
+// 2 usage error (unknown option, missing or malformed value, parameter out of range).
+// Outputs are written to temporary files beside them and renamed at the end, so a failed
+// or interrupted run leaves no (half-written) output file.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+
+#include <CGAL/ism_surface_reconstruction.h>
+#include <CGAL/ISM_reconstruction_function.h>
+#include <CGAL/ISM_reconstruction_3/IO/tet_mesh_io.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::ISM_reconstruction_function<Kernel> Function;
+typedef CGAL::ISM_reconstruction_3::Settings Settings;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace {
+
+enum Exit_code { SUCCESS = 0, BAD_INPUT = 1, USAGE_ERROR = 2 };
+
+// An error with the exit code it leads to.
+struct Failure
+{
+  int code;
+  std::string message;
+};
+
+[[noreturn]] void usage_error(const std::string& message) { throw Failure{USAGE_ERROR, message}; }
+[[noreturn]] void input_error(const std::string& message) { throw Failure{BAD_INPUT, message}; }
+
+std::string lowercase_extension(const std::string& filename)
+{
+  const std::size_t slash = filename.find_last_of('/');
+  const std::size_t dot = filename.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = filename.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+std::string format_double(double v)
+{
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// ---------------------------------------------------------------------------------------
+// Temporary output files: removed at exit or on SIGINT/SIGTERM unless renamed into place.
+// ---------------------------------------------------------------------------------------
+
+const int max_temporaries = 4;
+char g_temporaries[max_temporaries][4096];
+volatile std::sig_atomic_t g_number_of_temporaries = 0;
+
+void remove_temporaries()
+{
+  for(int i = 0; i < g_number_of_temporaries; ++i)
+    if(g_temporaries[i][0] != '\0') ::unlink(g_temporaries[i]);
+  g_number_of_temporaries = 0;
+}
+
+extern "C" void on_signal(int sig)
+{
+  for(int i = 0; i < g_number_of_temporaries; ++i)  // unlink is async-signal-safe
+    if(g_temporaries[i][0] != '\0') ::unlink(g_temporaries[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+// `dir/name.ext` -> `dir/.name.tmp<pid>.ext` (same directory, so that rename is atomic;
+// same extension, so that the writers choose the same format)
+std::string temporary_name(const std::string& path, const std::string& ext)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = (slash == std::string::npos) ? "" : path.substr(0, slash + 1);
+  std::string name = (slash == std::string::npos) ? path : path.substr(slash + 1);
+  name = name.substr(0, name.size() - ext.size() - 1);
+  return dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + ext;
+}
+
+void register_temporary(const std::string& path)
+{
+  if(g_number_of_temporaries >= max_temporaries || path.size() >= sizeof(g_temporaries[0]))
+    throw Failure{BAD_INPUT, "internal error: too many temporary files"};
+  std::strcpy(g_temporaries[g_number_of_temporaries], path.c_str());
+  g_number_of_temporaries = g_number_of_temporaries + 1;
+}
+
+// Creates (empty) the temporary file, so that an unwritable directory is reported before
+// the reconstruction runs rather than after.
+void create_temporary(const std::string& temporary, const std::string& final_name)
+{
+  register_temporary(temporary);
+  std::ofstream os(temporary);
+  if(!os)
+    input_error("cannot write '" + final_name + "': " + std::strerror(errno));
+}
+
+void rename_into_place(const std::string& temporary, const std::string& final_name)
+{
+  if(std::rename(temporary.c_str(), final_name.c_str()) != 0)
+    input_error("cannot write '" + final_name + "': " + std::strerror(errno));
+}
+
+// ---------------------------------------------------------------------------------------
+// Options: one table drives parsing, --help (defaults read from Settings) and the names
+// in range errors, so that none of them can drift from the library.
+// ---------------------------------------------------------------------------------------
+
+const char* distance_name(CGAL::ISM_reconstruction_3::Distance_estimate d)
+{
+  switch(d)
+  {
+  case CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE: return "nearest-squared";
+  case CGAL::ISM_reconstruction_3::NEAREST_POINT_DISTANCE: return "nearest";
+  default: return "plane";
+  }
+}
+
+template <class Integer>
+Integer parse_integer(const std::string& flag, const std::string& value)
+{
+  const char* s = value.c_str();
+  char* end = nullptr;
+  errno = 0;
+  if(std::is_unsigned<Integer>::value)
+  {
+    if(value.find('-') != std::string::npos)
+      usage_error(flag + ": '" + value + "' is out of range (it must not be negative)");
+    const unsigned long long v = std::strtoull(s, &end, 10);
+    if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not an integer");
+    if(errno == ERANGE || v > (std::numeric_limits<Integer>::max)())
+      usage_error(flag + ": '" + value + "' is out of range");
+    return Integer(v);
+  }
+  const long long v = std::strtoll(s, &end, 10);
+  if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not an integer");
+  if(errno == ERANGE || v > (std::numeric_limits<Integer>::max)() || v < (std::numeric_limits<Integer>::min)())
+    usage_error(flag + ": '" + value + "' is out of range");
+  return Integer(v);
+}
+
+double parse_real(const std::string& flag, const std::string& value)
+{
+  const char* s = value.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(s, &end);
+  if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not a number");
+  if(!std::isfinite(v) || errno == ERANGE) usage_error(flag + ": '" + value + "' is out of range");
+  return v;
+}
+
+struct Option
+{
+  const char* flag;
+  const char* field;     // the Settings member, as named in Settings::check() messages
+  const char* argument;  // nullptr for a switch
+  const char* help;
+  std::function<void(Settings&, const std::string& flag, const std::string& value)> set;
+  std::function<std::string(const Settings&)> show;
+};
+
+#define ISM_INTEGER_OPTION(FLAG, FIELD, HELP)                                                        \
+  Option{FLAG, #FIELD, "N", HELP,                                                                  \
+         [](Settings& s, const std::string& f, const std::string& v) {                             \
+           s.FIELD = parse_integer<decltype(s.FIELD)>(f, v);                                       \
+         },                                                                                        \
+         [](const Settings& s) { return std::to_string(s.FIELD); }}
+#define ISM_REAL_OPTION(FLAG, FIELD, HELP)                                                           \
+  Option{FLAG, #FIELD, "X", HELP,                                                                  \
+         [](Settings& s, const std::string& f, const std::string& v) { s.FIELD = parse_real(f, v); }, \
+         [](const Settings& s) { return format_double(s.FIELD); }}
+
+const std::vector<Option>& options()
+{
+  static const std::vector<Option> table = {
+    ISM_INTEGER_OPTION("--maximum-depth", maximum_depth,
+                       "deepest level of a cell of the triangulation (the paper's maximum level)"),
+    ISM_INTEGER_OPTION("--min-points-per-cell", min_points_per_cell,
+                       "a cell is fitted and subdivided only with at least this many points"),
+    ISM_REAL_OPTION("--coplanarity-threshold", coplanarity_threshold,
+                    "a cell whose coplanarity error l0/(l0+l1+l2) is below this is not subdivided"),
+    ISM_REAL_OPTION("--empty-cell-error", empty_cell_error,
+                    "error given to empty cells (eps_empty), as a fraction of [eps_min, eps_max]"),
+    ISM_REAL_OPTION("--initial-temperature", initial_temperature,
+                    "annealing start temperature, in units of the mean |H_e|"),
+    ISM_REAL_OPTION("--cooling-factor", cooling_factor, "temperature ratio between two annealing sweeps"),
+    ISM_INTEGER_OPTION("--sweeps", number_of_sweeps, "sweeps of the final annealing"),
+    ISM_INTEGER_OPTION("--warm-start-interval", warm_start_interval,
+                       "bisections between topology passes during refinement; 0: whenever the number "
+                       "of leaves doubled; -1: none"),
+    ISM_INTEGER_OPTION("--seed", random_seed, "random seed of the annealing (a run is deterministic)"),
+    ISM_INTEGER_OPTION("--smoothing-iterations", smoothing_iterations,
+                       "Taubin lambda/mu iterations on the output surface (0: none)"),
+    ISM_REAL_OPTION("--smoothing-lambda", smoothing_lambda, "Taubin smoothing factor lambda"),
+    ISM_REAL_OPTION("--smoothing-mu", smoothing_mu, "Taubin inflation factor mu"),
+    Option{"--no-clamp", "clamp_box_boundary", nullptr,
+           "do not hold the box boundary vertices outside while annealing (fix the global sign afterwards)",
+           [](Settings& s, const std::string&, const std::string&) { s.clamp_box_boundary = false; },
+           [](const Settings& s) { return std::string(s.clamp_box_boundary ? "clamped" : "not clamped"); }},
+    Option{"--distance", "distance_estimate", "nearest-squared|nearest|plane",
+           "value at a vertex: squared distance to the nearest point (the paper), distance to it, or "
+           "distance to the plane fitted to the nearest points",
+           [](Settings& s, const std::string& f, const std::string& v) {
+             if(v == "nearest-squared") s.distance_estimate = CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE;
+             else if(v == "nearest") s.distance_estimate = CGAL::ISM_reconstruction_3::NEAREST_POINT_DISTANCE;
+             else if(v == "plane") s.distance_estimate = CGAL::ISM_reconstruction_3::LOCAL_PLANE_DISTANCE;
+             else usage_error(f + ": '" + v + "' is not one of nearest-squared, nearest, plane");
+           },
+           [](const Settings& s) { return std::string(distance_name(s.distance_estimate)); }},
+    ISM_REAL_OPTION("--box-margin", box_margin,
+                    "margin of the box around the points, as a fraction of their largest extent"),
+  };
+  return table;
+}
+
+#undef ISM_INTEGER_OPTION
+#undef ISM_REAL_OPTION
+
+const Option* find_option(const std::string& flag)
+{
+  for(const Option& o : options())
+    if(flag == o.flag) return &o;
+  return nullptr;
+}
+
+void print_help(std::ostream& os)
+{
+  const Settings defaults, paper = Settings::paper();
+  os << "Usage: ism_reconstruct [options] INPUT OUTPUT\n\n"
+        "Reconstructs a closed, 2-manifold surface from points WITHOUT normals (ISM_reconstruction_3:\n"
+        "an in/out function on a binary multitriangulation, signs by an Ising model).\n\n"
+        "  INPUT   points: .xyz/.pwn (x y z per line, more columns ignored), .ply, .off (its vertices)";
+#ifdef CGAL_LINKED_WITH_LASLIB
+  os << ", .las";
+#endif
+  os << "\n  OUTPUT  the surface: .off, .ply or .obj\n\n"
+        "Options (default value in brackets; 'paper:' when --paper changes it):\n";
+  // "  --flag ARG   help text, wrapped at 100 columns under itself"
+  auto line = [&os](const std::string& left, const std::string& help) {
+    const std::size_t column = 30, width = 100;
+    std::string text = "  " + left;
+    if(text.size() + 1 > column) { os << text << "\n"; text.clear(); }
+    text.resize(column, ' ');
+    std::istringstream words(help);
+    std::string word;
+    bool first = true;
+    while(words >> word)
+    {
+      if(!first && text.size() + 1 + word.size() > width)
+      {
+        os << text << "\n";
+        text.assign(column, ' ');
+        first = true;
+      }
+      text += (first ? "" : " ") + word;
+      first = false;
+    }
+    os << text << "\n";
+  };
+  for(const Option& o : options())
+  {
+    std::string help = std::string(o.help) + " [" + o.show(defaults);
+    if(o.show(paper) != o.show(defaults)) help += "; paper: " + o.show(paper);
+    help += "]";
+    line(std::string(o.flag) + (o.argument ? std::string(" ") + o.argument : std::string()), help);
+  }
+  line("--paper", "start from the paper's settings (Settings::paper()); other options override them [off]");
+  line("--tets FILE", "also write the triangulation leaves with per-vertex 'sign' and 'distance' (.vtu or .mesh) [none]");
+  line("--quiet", "no progress and no summary; errors only [off]");
+  line("-h, --help", "print this help and exit");
+  os << "\nValues are given as '--flag VALUE' or '--flag=VALUE'.\n"
+        "Progress goes to stderr when it is a terminal; the summary goes to stdout.\n"
+        "Exit codes: 0 success, 1 bad input or unwritable output, 2 usage error.\n"
+        "Outputs are written to temporary files and renamed at the end: a failed run leaves none.\n";
+}
+
+struct Command_line
+{
+  Settings settings;
+  std::string input, output, tets;
+  bool quiet = false;
+  bool help = false;
+};
+
+Command_line parse_command_line(int argc, char** argv)
+{
+  Command_line cl;
+  bool paper = false;
+  std::vector<std::pair<const Option*, std::string> > assignments;  // applied after --paper
+  std::vector<std::string> positional;
+  bool options_ended = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    if(options_ended || arg.size() < 2 || arg[0] != '-')
+    {
+      positional.push_back(arg);
+      continue;
+    }
+    if(arg == "--") { options_ended = true; continue; }
+    std::string value;
+    bool has_value = false;
+    const std::size_t eq = arg.find('=');
+    if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
+    {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_value = true;
+    }
+    auto take_value = [&]() -> std::string {
+      if(has_value) return value;
+      if(i + 1 >= argc) usage_error("option " + arg + " needs a value");
+      return argv[++i];
+    };
+    auto no_value = [&]() {
+      if(has_value) usage_error("option " + arg + " takes no value");
+    };
+    if(arg == "-h" || arg == "--help") { no_value(); cl.help = true; }
+    else if(arg == "--quiet") { no_value(); cl.quiet = true; }
+    else if(arg == "--paper") { no_value(); paper = true; }
+    else if(arg == "--tets") cl.tets = take_value();
+    else if(const Option* o = find_option(arg))
+    {
+      if(o->argument) assignments.emplace_back(o, take_value());
+      else { no_value(); assignments.emplace_back(o, std::string()); }
+    }
+    else
+      usage_error("unknown option '" + arg + "'");
+  }
+  if(cl.help) return cl;
+
+  cl.settings = paper ? Settings::paper() : Settings();
+  for(const auto& a : assignments) a.first->set(cl.settings, a.first->flag, a.second);
+  try
+  {
+    cl.settings.check();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    // name the flag rather than the C++ member
+    std::string message = e.what();
+    for(const Option& o : options())
+      if(message.find(std::string(" ") + o.field + " ") != std::string::npos)
+        message = std::string(o.flag) + ": " + message;
+    usage_error(message);
+  }
+
+  if(positional.size() != 2)
+    usage_error(positional.size() < 2 ? "an INPUT and an OUTPUT file are needed" : "too many arguments");
+  cl.input = positional[0];
+  cl.output = positional[1];
+  const std::string out_ext = lowercase_extension(cl.output);
+  if(out_ext != "off" && out_ext != "ply" && out_ext != "obj")
+    usage_error("output '" + cl.output + "': the extension must be .off, .ply or .obj");
+  if(!cl.tets.empty())
+  {
+    const std::string ext = lowercase_extension(cl.tets);
+    if(ext != "vtu" && ext != "mesh")
+      usage_error("--tets '" + cl.tets + "': the extension must be .vtu or .mesh");
+  }
+  return cl;
+}
+
+// ---------------------------------------------------------------------------------------
+// Input. CGAL's readers say little about what is wrong; text files are scanned first so
+// that the message can name the line.
+// ---------------------------------------------------------------------------------------
+
+// strtod on a whole token; false if it is not entirely a number
+bool parse_token(const std::string& token, double& v)
+{
+  char* end = nullptr;
+  v = std::strtod(token.c_str(), &end);
+  return end != token.c_str() && *end == '\0';
+}
+
+std::vector<std::string> split(const std::string& line)
+{
+  std::vector<std::string> tokens;
+  std::istringstream is(line);
+  std::string t;
+  while(is >> t) tokens.push_back(t);
+  return tokens;
+}
+
+// at most `n` characters of `s`, anything but printable ASCII shown as '?'
+std::string printable(const std::string& s, std::size_t n)
+{
+  std::string r = s.substr(0, n);
+  for(char& c : r)
+    if(c < 0x20 || c > 0x7e) c = '?';
+  return r + (s.size() > n ? "..." : "");
+}
+
+std::string where(const std::string& file, std::size_t line) { return "'" + file + "', line " + std::to_string(line); }
+
+// `x y z [nx ny nz ...]` per line, '#' comments, an optional point count on the first line
+// (the format of CGAL::IO::read_XYZ).
+void scan_xyz(const std::string& file, std::istream& is)
+{
+  std::string line;
+  std::size_t number = 0, points = 0;
+  long long announced = -1;
+  std::size_t announced_line = 0;
+  while(std::getline(is, line))
+  {
+    ++number;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if(first == std::string::npos || line[first] == '#') continue;
+    const std::vector<std::string> tokens = split(line);
+    std::vector<double> values;
+    for(const std::string& t : tokens)
+    {
+      double v;
+      if(!parse_token(t, v)) break;
+      values.push_back(v);
+    }
+    if(number == 1 && tokens.size() == 1 && values.size() == 1 && values[0] >= 0 && values[0] == std::floor(values[0]))
+    {
+      announced = (long long)values[0];
+      announced_line = number;
+      continue;
+    }
+    if(values.size() < 3)
+      input_error(where(file, number) + ": expected 'x y z' coordinates, read '" + printable(line, 60) + "'");
+    for(int d = 0; d < 3; ++d)
+      if(!std::isfinite(values[d]))
+        input_error(where(file, number) + ": the point has a NaN or infinite coordinate");
+    if(values.size() > 3 && values.size() < 6)
+      input_error(where(file, number) + ": incomplete normal (expected 3 or at least 6 numbers)");
+    ++points;
+  }
+  if(is.bad()) input_error("'" + file + "': read error");
+  if(points == 0) input_error("'" + file + "' holds no point");
+  if(announced >= 0 && (long long)points != announced)
+    input_error(where(file, announced_line) + " announces " + std::to_string(announced) + " points but the file holds " +
+                std::to_string(points) + " (truncated?)");
+}
+
+// ASCII OFF: header, counts, vertices, faces; '#' comments. Binary or n-dimensional OFF
+// is left to CGAL's reader.
+void scan_off(const std::string& file, std::istream& is)
+{
+  std::string line;
+  std::size_t number = 0;
+  std::vector<std::string> tokens;
+  std::size_t next = 0;
+  // the next token, or "" at the end of the file; `number` is its line
+  auto token = [&]() -> std::string {
+    while(next >= tokens.size())
+    {
+      if(!std::getline(is, line)) return std::string();
+      ++number;
+      const std::size_t hash = line.find('#');
+      if(hash != std::string::npos) line.erase(hash);
+      tokens = split(line);
+      next = 0;
+    }
+    return tokens[next++];
+  };
+  // the rest of the current line (a vertex or face record is one line)
+  auto rest_of_line = [&]() {
+    std::vector<std::string> r(tokens.begin() + std::ptrdiff_t(next), tokens.end());
+    next = tokens.size();
+    return r;
+  };
+
+  const std::string header = token();
+  if(header.empty()) input_error("'" + file + "' holds only white space or comments");
+  if(header.size() < 3 || header.compare(header.size() - 3, 3, "OFF") != 0 ||
+     header.find_first_not_of("STCN4nOF") != std::string::npos)
+    input_error(where(file, number) + ": not an OFF file (the first word is '" + printable(header, 40) + "', not 'OFF')");
+  if(header.find('n') != std::string::npos) return;
+  const std::size_t coordinates = header.find('4') != std::string::npos ? 4 : 3;
+  std::string t = token();
+  if(t == "BINARY") return;
+
+  long long counts[3] = {-1, -1, 0};
+  for(int k = 0; k < 2; ++k)
+  {
+    if(k > 0) t = token();
+    double v;
+    if(t.empty()) input_error(where(file, number) + ": the file ends before the vertex and face counts");
+    if(!parse_token(t, v) || v < 0 || v != std::floor(v) || v > 4e9)
+      input_error(where(file, number) + ": expected the vertex and face counts, read '" + printable(t, 40) + "'");
+    counts[k] = (long long)v;
+  }
+  rest_of_line();  // the edge count, ignored as CGAL does
+  if(counts[0] == 0) input_error(where(file, number) + ": the file has no vertex");
+
+  for(long long v = 0; v < counts[0]; ++v)
+  {
+    t = token();
+    if(t.empty())
+      input_error(where(file, number) + ": the file ends after " + std::to_string(v) + " of " +
+                  std::to_string(counts[0]) + " vertices (truncated?)");
+    std::vector<std::string> record(1, t);
+    for(const std::string& r : rest_of_line()) record.push_back(r);
+    if(record.size() < coordinates)
+      input_error(where(file, number) + ": vertex " + std::to_string(v) + " has fewer than " +
+                  std::to_string(coordinates) + " coordinates");
+    for(std::size_t d = 0; d < coordinates; ++d)
+    {
+      double x;
+      if(!parse_token(record[d], x))
+        input_error(where(file, number) + ": vertex " + std::to_string(v) + ": '" + printable(record[d], 40) +
+                    "' is not a number");
+      if(!std::isfinite(x))
+        input_error(where(file, number) + ": vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
+    }
+  }
+  for(long long f = 0; f < counts[1]; ++f)
+  {
+    t = token();
+    if(t.empty())
+      input_error(where(file, number) + ": the file ends after " + std::to_string(f) + " of " +
+                  std::to_string(counts[1]) + " faces (truncated?)");
+    double k;
+    if(!parse_token(t, k) || k < 1 || k != std::floor(k))
+      input_error(where(file, number) + ": face " + std::to_string(f) + ": expected a vertex count, read '" +
+                  printable(t, 40) + "'");
+    const std::vector<std::string> record = rest_of_line();
+    if(record.size() < std::size_t(k))
+      input_error(where(file, number) + ": face " + std::to_string(f) + " lists fewer than " +
+                  std::to_string(long(k)) + " vertices (truncated?)");
+    for(std::size_t j = 0; j < std::size_t(k); ++j)
+    {
+      double id;
+      if(!parse_token(record[j], id) || id < 0 || id >= double(counts[0]) || id != std::floor(id))
+        input_error(where(file, number) + ": face " + std::to_string(f) + ": '" + printable(record[j], 40) +
+                    "' is not a vertex index");
+    }
+  }
+}
+
+std::vector<Point> read_input(const std::string& file)
+{
+  struct stat st;
+  if(::stat(file.c_str(), &st) != 0)
+    input_error("cannot open '" + file + "': " + std::strerror(errno));
+  if(S_ISDIR(st.st_mode)) input_error("cannot read '" + file + "': it is a directory");
+  std::ifstream probe(file, std::ios::binary);
+  if(!probe) input_error("cannot open '" + file + "': " + std::strerror(errno));
+  if(probe.peek() == std::ifstream::traits_type::eof()) input_error("'" + file + "' is empty");
+
+  const std::string ext = lowercase_extension(file);
+  if(ext == "xyz" || ext == "pwn") scan_xyz(file, probe);
+  else if(ext == "off") scan_off(file, probe);
+  else if(ext == "ply") {}
+#ifdef CGAL_LINKED_WITH_LASLIB
+  else if(ext == "las") {}
+#else
+  else if(ext == "las")
+    input_error("cannot read '" + file + "': this build of CGAL is not linked with LASlib (no .las support)");
+#endif
+  else
+    input_error("cannot read '" + file + "': unknown format '." + ext + "' (use .xyz, .pwn, .ply or .off)");
+  probe.close();
+
+  std::vector<Point> points;
+  bool ok;
+  {
+    // CGAL's readers print their own diagnostics on std::cerr; ours are clearer
+    std::ostringstream silenced;
+    std::streambuf* old = std::cerr.rdbuf(silenced.rdbuf());
+    try { ok = CGAL::IO::read_points(file, std::back_inserter(points)); }
+    catch(...) { ok = false; }
+    std::cerr.rdbuf(old);
+  }
+  if(!ok) input_error("cannot read points from '" + file + "': the file is malformed or truncated");
+  if(points.empty()) input_error("'" + file + "' holds no point");
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) || !std::isfinite(points[i].z()))
+      input_error("'" + file + "': point " + std::to_string(i) + " has a NaN or infinite coordinate");
+  return points;
+}
+
+// ---------------------------------------------------------------------------------------
+// Progress (stderr, terminals only) and topology of the result
+// ---------------------------------------------------------------------------------------
+
+class Progress
+{
+public:
+  explicit Progress(bool enabled) : m_enabled(enabled) { m_timer.start(); }
+  void stage(const std::string& name, double fraction)
+  {
+    if(!m_enabled) return;
+    const double now = m_timer.time();
+    if(name == m_stage && fraction < 1 && now - m_last < 0.1) return;
+    m_stage = name;
+    m_last = now;
+    std::cerr << "\r\033[K" << std::setw(3) << int(100 * fraction + 1e-9) << "%  " << std::left << std::setw(11) << name
+              << std::right << std::fixed << std::setprecision(1) << std::setw(7) << now << " s" << std::flush;
+    std::cerr.unsetf(std::ios::floatfield);
+  }
+  void done()
+  {
+    if(m_enabled) std::cerr << "\r\033[K" << std::flush;
+  }
+  // the library reports 0-0.7 during refinement, 0.75 then 0.9 at the ends of
+  // refinement and topology, 1 at the end of distance estimation
+  bool report(double p)
+  {
+    stage(p < 0.75 ? "refinement" : (p < 0.9 ? "topology" : (p < 1 ? "distance" : "extraction")), 0.9 * p);
+    return true;
+  }
+
+private:
+  bool m_enabled;
+  CGAL::Real_timer m_timer;
+  std::string m_stage;
+  double m_last = -1;
+};
+
+struct Topology
+{
+  std::size_t components = 0, boundary_cycles = 0;
+  long euler = 0;
+  long genus = 0;
+  bool closed = false, manifold = false;
+};
+
+Topology topology(Mesh& mesh)
+{
+  Topology t;
+  t.closed = CGAL::is_closed(mesh);
+  std::size_t isolated = 0;
+  for(auto v : vertices(mesh))
+    if(mesh.is_isolated(v)) ++isolated;
+  std::vector<Mesh::Halfedge_index> non_manifold;
+  PMP::non_manifold_vertices(mesh, std::back_inserter(non_manifold));
+  t.manifold = CGAL::is_valid_polygon_mesh(mesh) && non_manifold.empty() && isolated == 0;
+  t.euler = long(num_vertices(mesh) - isolated) - long(num_edges(mesh)) + long(num_faces(mesh));
+  auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:ism_cc", 0).first;
+  t.components = PMP::connected_components(mesh, fcc);
+  std::vector<Mesh::Halfedge_index> cycles;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
+  t.boundary_cycles = cycles.size();
+  // chi = sum over components of (2 - 2 g_i - b_i)
+  t.genus = (2 * long(t.components) - long(t.boundary_cycles) - t.euler) / 2;
+  mesh.remove_property_map(fcc);
+  return t;
+}
+
+int run(int argc, char** argv)
+{
+  CGAL::Real_timer total;
+  total.start();
+  const Command_line cl = parse_command_line(argc, argv);
+  if(cl.help)
+  {
+    print_help(std::cout);
+    return SUCCESS;
+  }
+
+  // temporaries first: an unwritable output fails now, not after the reconstruction
+  const std::string out_ext = lowercase_extension(cl.output);
+  const std::string out_tmp = temporary_name(cl.output, out_ext);
+  std::string tets_ext, tets_tmp;
+  create_temporary(out_tmp, cl.output);
+  if(!cl.tets.empty())
+  {
+    tets_ext = lowercase_extension(cl.tets);
+    tets_tmp = temporary_name(cl.tets, tets_ext);
+    create_temporary(tets_tmp, cl.tets);
+    if(tets_ext == "mesh")  // the fields go to the .sol file beside the .mesh
+      register_temporary(tets_tmp.substr(0, tets_tmp.size() - 4) + "sol");
+  }
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::vector<Point> points = read_input(cl.input);
+  const double read_time = timer.time();
+
+  Progress progress(!cl.quiet && ::isatty(STDERR_FILENO));
+  Settings settings = cl.settings;
+  settings.callback = [&progress](double p) { return progress.report(p); };
+  std::unique_ptr<Function> function;
+  try
+  {
+    function.reset(new Function(points));
+  }
+  catch(const std::invalid_argument& e)
+  {
+    input_error("'" + cl.input + "': " + e.what());
+  }
+  try
+  {
+    function->compute_implicit_function_with_settings(settings);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    usage_error(e.what());
+  }
+  catch(const std::runtime_error& e)
+  {
+    input_error("'" + cl.input + "': " + e.what());
+  }
+
+  progress.stage("extraction", 0.9);
+  Mesh mesh;
+  const CGAL::ISM_reconstruction_3::Extraction_statistics extraction = CGAL::ISM_reconstruction_3::extract_surface(
+      *function, mesh, settings.smoothing_iterations, settings.smoothing_lambda, settings.smoothing_mu);
+
+  progress.stage("writing", 0.95);
+  timer.reset();
+  if(!CGAL::IO::write_polygon_mesh(out_tmp, mesh, CGAL::parameters::stream_precision(17)))
+    input_error("cannot write '" + cl.output + "'");
+  std::size_t number_of_tets = 0;
+  if(!cl.tets.empty())
+  {
+    const auto& tr = function->triangulation();
+    const std::vector<std::array<int, 4> > tets = tr.leaf_tetrahedra();
+    number_of_tets = tets.size();
+    std::vector<CGAL::IO::Tet_mesh_vertex_field> fields(2);
+    fields[0].first = "sign";
+    fields[0].second.assign(function->signs().begin(), function->signs().end());
+    fields[1].first = "distance";
+    fields[1].second = function->values();
+    if(!CGAL::IO::write_tet_mesh(tets_tmp, tr.points(), tets, fields))
+      input_error("cannot write '" + cl.tets + "'");
+  }
+  // all written: move into place (the .sol of a .mesh first, the surface last)
+  if(!cl.tets.empty())
+  {
+    if(tets_ext == "mesh")
+    {
+      const std::string sol = cl.tets.substr(0, cl.tets.size() - 4) + "sol";
+      rename_into_place(tets_tmp.substr(0, tets_tmp.size() - 4) + "sol", sol);
+    }
+    rename_into_place(tets_tmp, cl.tets);
+  }
+  rename_into_place(out_tmp, cl.output);
+  g_number_of_temporaries = 0;
+  const double write_time = timer.time();
+  progress.done();
+
+  if(cl.quiet) return SUCCESS;
+  const auto& stats = function->statistics();
+  const Topology topo = topology(mesh);
+  auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(3);
+  os << "input:       " << cl.input << " (" << stats.number_of_points << " points)\n"
+     << "leaves:      " << stats.number_of_leaves << " (" << stats.number_of_vertices << " vertices, "
+     << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level << ", "
+     << stats.number_of_topology_passes << " topology passes)\n"
+     << "time (s):    reading     " << std::setw(8) << read_time << "\n"
+     << "             refinement  " << std::setw(8) << stats.refinement_time << "\n"
+     << "             topology    " << std::setw(8) << stats.topology_time << "\n"
+     << "             distance    " << std::setw(8) << stats.distance_time << "\n"
+     << "             marching    " << std::setw(8) << extraction.marching_time << "\n"
+     << "             smoothing   " << std::setw(8) << extraction.smoothing_time << "\n"
+     << "             writing     " << std::setw(8) << write_time << "\n"
+     << "             total       " << std::setw(8) << total.time() << "\n"
+     << "output:      " << cl.output << " (" << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces)\n";
+  if(!cl.tets.empty())
+    os << "tets:        " << cl.tets << " (" << number_of_tets << " tetrahedra, fields sign and distance)\n";
+  os << "components:  " << topo.components << "\n"
+     << "genus:       " << topo.genus << "\n"
+     << "euler:       " << topo.euler << "\n"
+     << "closed:      " << yes(topo.closed) << "\n"
+     << "manifold:    " << yes(topo.manifold) << "\n";
+  std::cout << os.str() << std::flush;
+  return SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  int code = SUCCESS;
+  try
+  {
+    code = run(argc, argv);
+  }
+  catch(const Failure& f)
+  {
+    if(::isatty(STDERR_FILENO)) std::cerr << "\r\033[K";  // clear a progress line
+    std::cerr << "ism_reconstruct: error: " << f.message << "\n";
+    if(f.code == USAGE_ERROR) std::cerr << "(ism_reconstruct --help lists the options)\n";
+    code = f.code;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "ism_reconstruct: error: " << e.what() << "\n";
+    code = BAD_INPUT;
+  }
+  remove_temporaries();
+  return code;
+}

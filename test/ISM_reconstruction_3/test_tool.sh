@@ -1,0 +1,206 @@
+#!/usr/bin/env bash
+# End-to-end tests of the command-line tool ism_reconstruct (registered by tool_tests.cmake).
+#
+#   test_tool.sh ISM_RECONSTRUCT SAMPLE_MESH_POINTS MESH_DIR WORK_DIR
+#
+# - a small reconstruction (5,000 points sampled on MESH_DIR/sphere.off) succeeds, writes
+#   the surface in every format and the tets, and its summary says 1 component, genus 0,
+#   closed, manifold;
+# - missing, empty, garbage, NaN/inf-holding, truncated and degenerate inputs exit 1 with
+#   a message naming the file (and the line for text formats), leaving no output file;
+# - unknown options, missing or malformed values and out-of-range parameters exit 2;
+# - --help exits 0 and lists every option with its default.
+set -u
+tool=$1 sampler=$2 meshes=$3 work=$4
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+
+failures=0 block_failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# "ok" only when no check failed since the last run
+pass() { [ "$failures" -eq "$block_failures" ] && echo "ok:   $*"; }
+
+# run NAME EXPECTED_CODE ARGS... : runs the tool, keeps stdout/stderr in NAME.out/.err
+run() {
+  local name=$1 expected=$2
+  shift 2
+  block_failures=$failures
+  "$tool" "$@" >"$name.out" 2>"$name.err"
+  local code=$?
+  if [ "$code" -ne "$expected" ]; then
+    fail "$name: exit code $code, expected $expected; stderr: $(head -c 300 "$name.err")"
+    return 1
+  fi
+  return 0
+}
+# no temporary file may be left behind in the working directory
+no_leftovers() {
+  local left
+  left=$(find . -maxdepth 2 -name '*.tmp[0-9]*' | head -3)
+  [ -z "$left" ] || fail "$1: temporary files left: $left"
+}
+summary_has() {  # summary_has NAME KEY VALUE
+  grep -Eq "^$2: +$3\$" "$1.out" || fail "$1: summary lacks '$2: $3' ($(grep "^$2:" "$1.out"))"
+}
+
+# ---------------------------------------------------------------------------------------
+# 1. a small case that must work
+# ---------------------------------------------------------------------------------------
+"$sampler" --seed 3 "$meshes/sphere.off" 5000 sphere.xyz >/dev/null || { echo "FAIL: sampler"; exit 1; }
+if run e2e 0 sphere.xyz sphere.off --tets sphere_tets.vtu; then
+  [ -s sphere.off ] || fail "e2e: sphere.off missing or empty"
+  [ -s sphere_tets.vtu ] || fail "e2e: sphere_tets.vtu missing or empty"
+  head -1 sphere.off | grep -q OFF || fail "e2e: sphere.off is not an OFF file"
+  grep -q 'Name="sign"' sphere_tets.vtu && grep -q 'Name="distance"' sphere_tets.vtu ||
+    fail "e2e: the .vtu lacks the sign or distance field"
+  summary_has e2e components 1
+  summary_has e2e genus 0
+  summary_has e2e closed yes
+  summary_has e2e manifold yes
+  grep -q "^input: .*(5000 points)" e2e.out || fail "e2e: summary lacks the number of points"
+  for stage in refinement topology distance marching smoothing total; do
+    grep -Eq "^(time \(s\):)? +$stage +[0-9.]+\$" e2e.out || fail "e2e: summary lacks the $stage time"
+  done
+  [ -s e2e.err ] && fail "e2e: stderr not empty although it is not a terminal: $(head -c 200 e2e.err)"
+  no_leftovers e2e
+  pass "5,000 sphere points: $(grep -E '^(components|genus|closed|manifold):' e2e.out | tr -s ' ' | tr '\n' ' ')"
+fi
+
+# the other output formats, the .mesh tets (+ .sol), the paper's settings, --quiet
+if run formats 0 --quiet --paper --seed 2 sphere.xyz sphere.ply --tets sphere_tets.mesh; then
+  [ -s sphere.ply ] && head -1 sphere.ply | grep -q ply || fail "formats: sphere.ply missing or not PLY"
+  [ -s sphere_tets.mesh ] && [ -s sphere_tets.sol ] || fail "formats: sphere_tets.mesh or .sol missing"
+  [ -s formats.out ] && fail "formats: --quiet printed a summary"
+  no_leftovers formats
+  pass "--paper, .ply output, .mesh/.sol tets, --quiet"
+fi
+run obj 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.obj && {
+  grep -q '^f ' sphere.obj || fail "obj: sphere.obj has no face"
+  summary_has obj closed yes
+  pass ".obj output, --flag=value"
+}
+# a mesh file's vertices are points: reconstruct from the .off written above
+run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
+run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
+
+# ---------------------------------------------------------------------------------------
+# 2. bad input: exit 1, the file (and the line) named, no output left
+# ---------------------------------------------------------------------------------------
+bad_input() {  # bad_input NAME FILE [LINE]: the tool must refuse FILE
+  local name=$1 file=$2 line=${3:-}
+  rm -f "$name.off" "$name.vtu"
+  if run "$name" 1 "$file" "$name.off" --tets "$name.vtu"; then
+    grep -qF "$file" "$name.err" || fail "$name: the message does not name $file: $(cat "$name.err")"
+    if [ -n "$line" ]; then
+      grep -q "line $line\b" "$name.err" || fail "$name: the message does not name line $line: $(cat "$name.err")"
+    fi
+    [ -e "$name.off" ] || [ -e "$name.vtu" ] && fail "$name: an output file was left behind"
+    no_leftovers "$name"
+    pass "$name: $(head -1 "$name.err")"
+  fi
+}
+
+bad_input missing does_not_exist.xyz
+: >empty.xyz
+bad_input empty_xyz empty.xyz
+: >empty.off
+bad_input empty_off empty.off
+head -c 3000 /dev/urandom | tr -d '\n' >garbage.xyz; printf '\n' >>garbage.xyz
+bad_input garbage_xyz garbage.xyz 1
+printf 'this is not\na mesh\n' >garbage.off
+bad_input garbage_off garbage.off 1
+head -c 3000 /dev/urandom >garbage.ply
+bad_input garbage_ply garbage.ply
+{ head -n 4 sphere.xyz; echo "0.1 nan 0.2"; tail -n +5 sphere.xyz; } >nan.xyz
+bad_input nan_xyz nan.xyz 5
+{ head -n 9 sphere.xyz; echo "0.1 0.2 -inf"; tail -n +10 sphere.xyz; } >inf.xyz
+bad_input inf_xyz inf.xyz 10
+{ head -n 6 sphere.xyz; echo "0.1 0.2 zero"; tail -n +7 sphere.xyz; } >word.xyz
+bad_input word_xyz word.xyz 7
+# OFF (the data file, not the tool's output): header on line 1, counts on line 2,
+# vertex k on line k + 3
+cp "$meshes/sphere.off" mesh.off
+awk 'NR == 10 { $2 = "nan" } { print }' mesh.off >nan.off
+bad_input nan_off nan.off 10
+# truncated: in the middle of a coordinate line, in the vertex list, in the face list
+head -c $(($(stat -c %s sphere.xyz) - 25)) sphere.xyz >truncated.xyz
+bad_input truncated_xyz truncated.xyz "$(wc -l <truncated.xyz | awk '{print $1 + 1}')"
+{ echo 5000; cat sphere.xyz; } | head -n 2000 >counted.xyz
+bad_input truncated_counted_xyz counted.xyz 1
+head -n 100 mesh.off >truncated_vertices.off
+bad_input truncated_off_vertices truncated_vertices.off 100
+nv=$(sed -n 2p mesh.off | awk '{print $1}')
+head -n $((nv + 2 + 50)) mesh.off >truncated_faces.off
+bad_input truncated_off_faces truncated_faces.off $((nv + 52))
+if [ -s sphere.ply ]; then  # the binary PLY written above, cut in half
+  head -c $(($(stat -c %s sphere.ply) / 2)) sphere.ply >truncated.ply
+  bad_input truncated_ply truncated.ply
+else
+  fail "truncated_ply: no sphere.ply to truncate"
+fi
+# points that cannot bound a volume, and an unknown format
+head -n 5 sphere.xyz >few.xyz
+bad_input too_few_points few.xyz
+awk '{ print $1, $2, 0 }' sphere.xyz >flat.xyz
+bad_input coplanar_points flat.xyz
+cp sphere.xyz points.foo
+bad_input unknown_format points.foo
+# an output that cannot be written is refused before the work
+if run unwritable 1 sphere.xyz no_such_dir/out.off; then
+  grep -q "no_such_dir/out.off" unwritable.err || fail "unwritable: the message does not name the output"
+  pass "unwritable output: $(head -1 unwritable.err)"
+fi
+
+# ---------------------------------------------------------------------------------------
+# 3. usage errors: exit 2, the option named
+# ---------------------------------------------------------------------------------------
+usage() {  # usage NAME WORD ARGS...: exit 2 and the message holds WORD
+  local name=$1 word=$2
+  shift 2
+  rm -f usage.off
+  if run "$name" 2 "$@"; then
+    grep -qF -- "$word" "$name.err" || fail "$name: the message does not name '$word': $(cat "$name.err")"
+    [ -e usage.off ] && fail "$name: an output file was left behind"
+    no_leftovers "$name"
+    pass "$name: $(head -1 "$name.err")"
+  fi
+}
+usage unknown_flag --frobnicate --frobnicate sphere.xyz usage.off
+usage missing_value --maximum-depth sphere.xyz usage.off --maximum-depth
+usage not_a_number --maximum-depth --maximum-depth abc sphere.xyz usage.off
+usage not_a_real --cooling-factor --cooling-factor 0.9x sphere.xyz usage.off
+usage depth_out_of_range --maximum-depth --maximum-depth 0 sphere.xyz usage.off
+usage cooling_out_of_range --cooling-factor --cooling-factor 2 sphere.xyz usage.off
+usage margin_out_of_range --box-margin --box-margin=-1 sphere.xyz usage.off
+usage negative_seed --seed --seed -1 sphere.xyz usage.off
+usage huge_integer --sweeps --sweeps 99999999999999999999 sphere.xyz usage.off
+usage nan_value --smoothing-lambda --smoothing-lambda nan sphere.xyz usage.off
+usage bad_distance --distance --distance far sphere.xyz usage.off
+usage switch_with_value --no-clamp --no-clamp=1 sphere.xyz usage.off
+usage no_output OUTPUT sphere.xyz
+usage bad_output_extension usage.stl sphere.xyz usage.stl
+usage bad_tets_extension --tets sphere.xyz usage.off --tets usage.ele
+
+# ---------------------------------------------------------------------------------------
+# 4. --help: every option with its default
+# ---------------------------------------------------------------------------------------
+if run help 0 --help; then
+  # one record per option: its line and the indented lines that continue it
+  awk '/^  -/ { if (r != "") print r; r = $0; next } /^      / && r != "" { r = r " " $0; next }
+       { if (r != "") print r; r = "" } END { if (r != "") print r }' help.out | tr -s ' ' >help.records
+  for flag in --maximum-depth --min-points-per-cell --coplanarity-threshold --empty-cell-error \
+              --initial-temperature --cooling-factor --sweeps --warm-start-interval --seed \
+              --smoothing-iterations --smoothing-lambda --smoothing-mu --no-clamp --distance \
+              --box-margin --paper --tets --quiet; do
+    grep -Eq -- "^ $flag\b.*\[[^]]+\]\$" help.records || fail "help: no entry for $flag ending with its [default]"
+  done
+  grep -Eq -- "^ -h, --help\b" help.records || fail "help: --help is not listed"
+  grep -q "nearest-squared|nearest|plane" help.out || fail "help: the --distance choices are not listed"
+  pass "--help lists every option with its default"
+fi
+
+echo
+if [ "$failures" -ne 0 ]; then
+  echo "$failures check(s) failed"
+  exit 1
+fi
+echo "all tool checks passed"
