@@ -182,9 +182,9 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0.1`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_iterations}
-      \cgalParamDescription{the number of Taubin lambda/mu iterations on the output mesh; `0`: no smoothing}
+      \cgalParamDescription{the number of Taubin lambda/mu iterations on the output mesh; `0`: no smoothing (the default: on the irregular triangles of marching tetrahedra, 3 iterations folded 851 edges of the bunny by more than 120 degrees, against 17 unsmoothed, without improving the distance to the truth)}
       \cgalParamType{`unsigned int`, in [0, 10000]}
-      \cgalParamDefault{`3`}
+      \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_lambda}
       \cgalParamDescription{Taubin's lambda, the smoothing factor}
@@ -197,7 +197,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`-0.53`}
     \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
-      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
