@@ -228,6 +228,9 @@ const std::vector<Option>& options()
                     "error given to empty cells (eps_empty), as a fraction of [eps_min, eps_max]"),
     ISM_REAL_OPTION("--initial-temperature", initial_temperature,
                     "annealing start temperature, in units of the mean |H_e|"),
+    ISM_REAL_OPTION("--warm-start-temperature", warm_start_temperature,
+                    "annealing start temperature when starting from the previous signs (passes during "
+                    "refinement and the final one after them), in units of the mean |H_e|"),
     ISM_REAL_OPTION("--cooling-factor", cooling_factor, "temperature ratio between two annealing sweeps"),
     ISM_INTEGER_OPTION("--sweeps", number_of_sweeps, "sweeps of the final annealing"),
     ISM_INTEGER_OPTION("--warm-start-interval", warm_start_interval,
@@ -254,6 +257,9 @@ const std::vector<Option>& options()
            [](const Settings& s) { return std::string(distance_name(s.distance_estimate)); }},
     ISM_REAL_OPTION("--box-margin", box_margin,
                     "margin of the box around the points, as a fraction of their largest extent"),
+    ISM_REAL_OPTION("--minimum-island-fraction", minimum_island_fraction,
+                    "inside (or enclosed outside) clusters of fewer vertices than this fraction of the "
+                    "largest inside cluster are flipped; 0: keep all"),
   };
   return table;
 }
