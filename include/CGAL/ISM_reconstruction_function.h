@@ -125,6 +125,10 @@ public:
       m_points.push_back({{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }});
     }
     ISM_reconstruction_3::internal::check_point_set(m_points);
+    // Exact duplicates carry no information, and many copies of one point would keep a cell
+    // above the minimum count at every level (and degenerate the kd-tree): keep one of each.
+    std::sort(m_points.begin(), m_points.end());
+    m_points.erase(std::unique(m_points.begin(), m_points.end()), m_points.end());
     m_stats.number_of_points = m_points.size();
   }
   /// @}
@@ -238,7 +242,7 @@ public:
   const Statistics& statistics() const { return m_stats; }
   /// the parameters of the last run
   const Settings& settings() const { return m_settings; }
-  /// the input points (as doubles)
+  /// the input points (as doubles, sorted, exact duplicates removed)
   const std::vector<std::array<double, 3> >& input_points() const { return m_points; }
   /// @}
 

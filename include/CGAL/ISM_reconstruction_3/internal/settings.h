@@ -94,6 +94,18 @@ struct Settings
     if(smoothing_iterations > 10000) fail("smoothing_iterations", std::to_string(smoothing_iterations), "[0, 10000]");
     if(!(std::abs(smoothing_lambda) <= 1)) fail("smoothing_lambda", str(smoothing_lambda), "[-1, 1]");
     if(!(std::abs(smoothing_mu) <= 1)) fail("smoothing_mu", str(smoothing_mu), "[-1, 1]");
+    // Taubin's filter multiplies a frequency k in [0, 2] of the umbrella operator by
+    // (1 - lambda k)(1 - mu k) per iteration; Taubin lets it exceed 1 slightly at low k (no
+    // shrinking), far above 1 it diverges.
+    if(smoothing_iterations > 0)
+      for(int i = 0; i <= 200; ++i)
+      {
+        const double k = i / 100.;
+        if(std::abs((1 - smoothing_lambda * k) * (1 - smoothing_mu * k)) > 1.01)
+          throw std::invalid_argument("ISM reconstruction: smoothing_lambda = " + str(smoothing_lambda) +
+                                      " with smoothing_mu = " + str(smoothing_mu) +
+                                      " makes Taubin smoothing diverge (|(1 - lambda k)(1 - mu k)| > 1.01 for some k in [0, 2])");
+      }
     if(!(box_margin > 0 && box_margin <= 10)) fail("box_margin", str(box_margin), "(0, 10]");
     if(!(minimum_island_fraction >= 0 && minimum_island_fraction < 1))
       fail("minimum_island_fraction", str(minimum_island_fraction), "[0, 1)");
