@@ -6,12 +6,13 @@
 //                            [--case NAME] [--samples K] [--queries Q] [--close-holes]
 //                            [--output out.off]
 //
-// method: ism | ism_paper | poisson_jet_mst | poisson_oracle | advancing_front | scale_space
-//         | alpha_wrap
+// method: ism | ism_paper | poisson_jet_mst | poisson_jet_ism | poisson_oracle | advancing_front
+//         | scale_space | alpha_wrap
 // The input is N area-weighted samples of the truth mesh (ISM_eval::sample_points, seed S),
 // displaced by an isotropic gaussian of sigma = F * diagonal per axis: the same for every
 // method. Only the coordinates are given to the methods, except poisson_oracle which gets
-// the true face normals of the sampler.
+// the true face normals of the sampler. poisson_jet_mst and poisson_jet_ism differ only in
+// the orientation of the jet normals: mst_orient_normals or ism_orient_normals.
 // Scores: in/out agreement with the truth on Q uniform queries in the truth's bounding box
 // scaled by 1.1 (overall, and "far": queries farther than 1 % of that box's diagonal from
 // the truth), only when the output is closed (else null); symmetric mean / max surface
@@ -25,6 +26,7 @@
 #include "ism_evaluation.h"
 
 #include <CGAL/ism_surface_reconstruction.h>
+#include <CGAL/ism_orient_normals.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Scale_space_surface_reconstruction_3.h>
@@ -111,7 +113,7 @@ struct Run {
   std::vector<std::pair<std::string, double>> stages;  // seconds, in order
   bool soup_was_manifold = true;  // false if the method's triangle soup had to be split to become a mesh
   double flip_rate = -1;          // normal methods: share of oriented normals opposed to the true one
-  long long unoriented = -1;      // normal methods: points MST could not orient (removed, as in CGAL's example)
+  long long unoriented = -1;      // normal methods: points the orientation step could not orient (removed, as in CGAL's example)
   double glue_time = 0;            // this benchmark's soup-to-mesh conversion: in `stages`, not in time_total
   std::string note;
 };
@@ -188,12 +190,17 @@ bool poisson(const std::vector<Pwn>& pwn, double spacing, Run& run) {
   return true;
 }
 
-Run run_poisson_jet_mst(const std::vector<Pwn>& input) {
-  // (point, estimated normal, index of the input point): mst_orient_normals reorders the
-  // range, the index finds the true normal for the flip rate.
-  typedef std::tuple<Point_3, Vector_3, std::size_t> Tagged;
-  typedef CGAL::Nth_of_tuple_property_map<0, Tagged> TP_map;
-  typedef CGAL::Nth_of_tuple_property_map<1, Tagged> TN_map;
+// (point, estimated normal, index of the input point): the orientation steps reorder the
+// range, the index finds the true normal for the flip rate.
+typedef std::tuple<Point_3, Vector_3, std::size_t> Tagged;
+typedef CGAL::Nth_of_tuple_property_map<0, Tagged> TP_map;
+typedef CGAL::Nth_of_tuple_property_map<1, Tagged> TN_map;
+
+// Poisson after jet normals (k = 18) oriented by `orient` (a callable on the range of
+// Tagged that orients the normals in place and returns the first unoriented point, as
+// mst_orient_normals and ism_orient_normals do); `orient_stage` names its stage.
+template <class Orient>
+Run run_poisson_jet(const std::vector<Pwn>& input, const char* orient_stage, Orient orient) {
   Run run;
   std::vector<Tagged> tagged;
   tagged.reserve(input.size());
@@ -204,13 +211,13 @@ Run run_poisson_jet_mst(const std::vector<Pwn>& input) {
       tagged, 18, CGAL::parameters::point_map(TP_map()).normal_map(TN_map()));
   run.stages.emplace_back("jet_normals", t.time());
   t.reset();
-  const auto unoriented_begin =
-      CGAL::mst_orient_normals(tagged, 18, CGAL::parameters::point_map(TP_map()).normal_map(TN_map()));
-  run.stages.emplace_back("mst_orient", t.time());
+  const auto unoriented_begin = orient(tagged);
+  run.stages.emplace_back(orient_stage, t.time());
   t.reset();
-  // As CGAL's examples: the points MST could not orient are removed.
+  // As CGAL's examples: the points the orientation step could not orient are removed.
   const std::size_t n_oriented = std::size_t(unoriented_begin - tagged.begin());
   run.unoriented = (long long)(tagged.size() - n_oriented);
+  if (n_oriented == 0) throw std::runtime_error(std::string(orient_stage) + ": no normal could be oriented");
   std::size_t flipped = 0;
   std::vector<Pwn> pwn;
   pwn.reserve(n_oriented);
@@ -219,13 +226,27 @@ Run run_poisson_jet_mst(const std::vector<Pwn>& input) {
     if (CGAL::to_double(CGAL::scalar_product(n, input[std::get<2>(tagged[i])].second)) < 0) ++flipped;
     pwn.emplace_back(std::get<0>(tagged[i]), n);
   }
-  run.flip_rate = n_oriented ? double(flipped) / double(n_oriented) : 1.0;
+  run.flip_rate = double(flipped) / double(n_oriented);
   std::vector<Tagged>().swap(tagged);
   const double spacing = CGAL::compute_average_spacing<CGAL::Parallel_if_available_tag>(
       pwn, 6, CGAL::parameters::point_map(Point_map()));
   run.stages.emplace_back("spacing", t.time());
   if (!poisson(pwn, spacing, run)) throw std::runtime_error("Poisson reconstruction failed");
   return run;
+}
+
+// Jet normals oriented by a minimum spanning tree (k = 18), as CGAL's tutorial does.
+Run run_poisson_jet_mst(const std::vector<Pwn>& input) {
+  return run_poisson_jet(input, "mst_orient", [](std::vector<Tagged>& tagged) {
+    return CGAL::mst_orient_normals(tagged, 18, CGAL::parameters::point_map(TP_map()).normal_map(TN_map()));
+  });
+}
+
+// Jet normals oriented by this package's in/out function (ism_orient_normals, defaults).
+Run run_poisson_jet_ism(const std::vector<Pwn>& input) {
+  return run_poisson_jet(input, "ism_orient", [](std::vector<Tagged>& tagged) {
+    return CGAL::ism_orient_normals(tagged, CGAL::parameters::point_map(TP_map()).normal_map(TN_map()));
+  });
 }
 
 Run run_poisson_oracle(const std::vector<Pwn>& input) {
@@ -301,7 +322,8 @@ Run run_alpha_wrap(const std::vector<Pwn>& input) {
 int usage() {
   std::cerr << "usage: benchmark_reconstruction --method M --mesh truth.off --points N [--noise F] [--seed S]\n"
                "         [--case NAME] [--samples K] [--queries Q] [--close-holes] [--output out.off]\n"
-               "  M: ism ism_paper poisson_jet_mst poisson_oracle advancing_front scale_space alpha_wrap\n";
+               "  M: ism ism_paper poisson_jet_mst poisson_jet_ism poisson_oracle advancing_front scale_space\n"
+               "     alpha_wrap\n";
   return 2;
 }
 
@@ -360,6 +382,7 @@ int main(int argc, char** argv) {
     if (method == "ism") run = run_ism(input, false);
     else if (method == "ism_paper") run = run_ism(input, true);
     else if (method == "poisson_jet_mst") run = run_poisson_jet_mst(input);
+    else if (method == "poisson_jet_ism") run = run_poisson_jet_ism(input);
     else if (method == "poisson_oracle") run = run_poisson_oracle(input);
     else if (method == "advancing_front") run = run_advancing_front(input);
     else if (method == "scale_space") run = run_scale_space(input);

@@ -8,11 +8,16 @@ a case samples the same input (same mesh, size, noise and seed).
   /usr/bin/python3 run_benchmark.py --build <cmake build dir> [--out DIR] [--quick]
                                     [--methods ism,poisson_jet_mst] [--cases bunny,knot]
                                     [--timeout S] [--queries Q] [--samples K]
+  /usr/bin/python3 run_benchmark.py --replot results.jsonl [--out DIR] [--methods ...] [--cases ...]
 
 --quick: bunny and eight at 5,000 points, every method, 120 s limit per run; exits with a
 non-zero status if any method did not run or produced no scores (a CTest test).
 Outputs in --out (default: the benchmark/ directory): results.md, results.png (if
 matplotlib is there), results.jsonl (one JSON line per run, as printed by the program).
+--replot: runs nothing; rewrites results.md and results.png in --out from the runs saved in a
+results.jsonl (copy it elsewhere first if --out is its own directory: it is not rewritten).
+Give it the --quick, --timeout, --queries and --samples of the run that wrote the file, which
+the tables' text quotes.
 """
 
 import argparse
@@ -27,13 +32,14 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-METHODS = ["ism", "ism_paper", "poisson_jet_mst", "poisson_oracle", "advancing_front", "scale_space",
-           "alpha_wrap"]
+METHODS = ["ism", "ism_paper", "poisson_jet_mst", "poisson_jet_ism", "poisson_oracle", "advancing_front",
+           "scale_space", "alpha_wrap"]
 
 METHOD_LABEL = {
     "ism": "ISM (package defaults)",
     "ism_paper": "ISM (paper settings)",
     "poisson_jet_mst": "Poisson + jet + MST",
+    "poisson_jet_ism": "Poisson + jet + ISM orientation",
     "poisson_oracle": "Poisson, true normals",
     "advancing_front": "Advancing front",
     "scale_space": "Scale space",
@@ -61,7 +67,7 @@ QUICK_CASES = [
 
 def parse_args():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", required=True, help="CMake build directory")
+    ap.add_argument("--build", help="CMake build directory (required unless --replot)")
     ap.add_argument("--exe", help="benchmark_reconstruction (default: <build>/benchmark/ISM_reconstruction_3/...)")
     ap.add_argument("--data", help="directory of the meshes (default: <build>/data/meshes)")
     ap.add_argument("--out", default=os.path.dirname(HERE), help="output directory (default: benchmark/)")
@@ -72,7 +78,12 @@ def parse_args():
     ap.add_argument("--queries", type=int, help="in/out queries per run (default 30000, quick 20000)")
     ap.add_argument("--samples", type=int, help="distance samples per mesh (default 100000, quick 20000)")
     ap.add_argument("--seed", type=int, default=1)
-    return ap.parse_args()
+    ap.add_argument("--replot", metavar="JSONL",
+                    help="run nothing: rewrite results.md and results.png from a saved results.jsonl")
+    args = ap.parse_args()
+    if not args.build and not args.replot:
+        ap.error("--build is required (unless --replot)")
+    return args
 
 
 def run_one(cmd, timeout):
@@ -151,6 +162,9 @@ def write_markdown(path, results, cases, methods, args, timeout, started, finish
         "unoriented points removed as in CGAL's examples) + Poisson_reconstruction_function meshed as "
         "poisson_surface_reconstruction_delaunay does (spacing: compute_average_spacing, k = 6; "
         "sm_angle 20, sm_radius 30, sm_distance 0.375); jet and spacing use Parallel_if_available_tag. "
+        "*Poisson + jet + ISM orientation*: the same, except that the jet normals are oriented by "
+        "CGAL::ism_orient_normals (this package's in/out function, default parameters; the points it "
+        "could not orient removed) instead of mst_orient_normals. "
         "*Advancing front*: advancing_front_surface_reconstruction defaults. *Scale space*: "
         "Scale_space_surface_reconstruction_3 defaults, increase_scale(4) as CGAL's example, mesh on "
         "the smoothed points. *Alpha wrap*: alpha_wrap_3 on the points, alpha = diagonal/100, "
@@ -293,12 +307,13 @@ def notes(by, cases):
                    "2-manifold (%s); facets given twice are kept once, and turning the rest into a Surface_mesh "
                    "splits it at its non-manifold edges and vertices, so its *components* and *genus* columns "
                    "count those pieces, not the surface's topology; its distances are valid." % ", ".join(ss))
-    fl = [(c[0], by[(c[0], "poisson_jet_mst")]["flip_rate"]) for c in cases
-          if by.get((c[0], "poisson_jet_mst"), {}).get("status") == "ok"
-          and (by[(c[0], "poisson_jet_mst")].get("flip_rate") or 0) > 0.01]
-    if fl:
-        out.append("- *Poisson + jet + MST*: MST orientation left %s of the normals opposed to the truth on %s." % (
-            " / ".join("%.1f %%" % (100 * f) for n, f in fl), ", ".join(n for n, f in fl)))
+    for m, label, step in (("poisson_jet_mst", "Poisson + jet + MST", "MST orientation"),
+                           ("poisson_jet_ism", "Poisson + jet + ISM orientation", "ism_orient_normals")):
+        fl = [(c[0], by[(c[0], m)]["flip_rate"]) for c in cases
+              if by.get((c[0], m), {}).get("status") == "ok" and (by[(c[0], m)].get("flip_rate") or 0) > 0.01]
+        if fl:
+            out.append("- *%s*: %s left %s of the normals opposed to the truth on %s." % (
+                label, step, " / ".join("%.1f %%" % (100 * f) for n, f in fl), ", ".join(n for n, f in fl)))
     af = [c[0] for c in cases if by.get((c[0], "advancing_front"), {}).get("status") == "ok"
           and not by[(c[0], "advancing_front")]["closed"]]
     if af:
@@ -372,6 +387,33 @@ def write_chart(path, results, cases, methods):
     return True
 
 
+def replot(args, cases, methods):
+    """Rewrites results.md and results.png from the runs saved in args.replot."""
+    with open(args.replot) as f:
+        saved = [json.loads(line) for line in f if line.strip().startswith("{")]
+    names = set(r.get("case") for r in saved)
+    if not args.cases:  # the cases of the file, in the order of the lists above
+        seen = set()
+        cases = [c for c in FULL_CASES + QUICK_CASES if c[0] in names and not (c[0] in seen or seen.add(c[0]))]
+    wanted_c, wanted_m = set(c[0] for c in cases), set(methods)
+    results = [r for r in saved if r.get("case") in wanted_c and r.get("method") in wanted_m]
+    if not results:
+        sys.exit("no run of the selected methods and cases in %s" % args.replot)
+    methods = [m for m in methods if any(r["method"] == m for r in results)]
+    timeout = args.timeout or (120.0 if args.quick else 600.0)
+    loads = ["%.2f" % r["load_before"] if r.get("load_before") is not None else "?" for r in (results[0], results[-1])]
+    finished = time.strftime("%Y-%m-%d %H:%M", time.localtime(os.path.getmtime(args.replot)))
+    total_wall = sum(r.get("wall_process", 0) for r in results)
+    os.makedirs(args.out, exist_ok=True)
+    md = os.path.join(args.out, "results.md")
+    write_markdown(md, results, cases, methods, args, timeout, "?", finished, loads, total_wall)
+    chart = write_chart(os.path.join(args.out, "results.png"), results, cases, methods)
+    print("re-rendered %d runs (%s; %s) from %s: wrote %s%s" % (
+        len(results), ", ".join(c[0] for c in cases), ", ".join(methods), args.replot, md,
+        " and results.png" if chart else ""))
+    return 0
+
+
 def main():
     args = parse_args()
     cases = QUICK_CASES if args.quick else FULL_CASES
@@ -389,6 +431,8 @@ def main():
     timeout = args.timeout or (120.0 if args.quick else 600.0)
     args.queries = args.queries or (20000 if args.quick else 30000)
     args.samples = args.samples or (20000 if args.quick else 100000)
+    if args.replot:
+        return replot(args, cases, methods)
     exe = args.exe or os.path.join(args.build, "benchmark", "ISM_reconstruction_3", "benchmark_reconstruction")
     data = args.data or os.path.join(args.build, "data", "meshes")
     if not os.access(exe, os.X_OK):

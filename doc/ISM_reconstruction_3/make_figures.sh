@@ -6,6 +6,7 @@
 #   2. runs it on bunny00.off and knot1.off from libcgal-demo's data tarball;
 #   3. renders the PNGs with figures/render_figures.py (/usr/bin/python3, matplotlib);
 #   4. copies the benchmark chart benchmark/results.png when it exists.
+# `make_figures.sh --chart-only` does step 4 alone (after a run of the benchmark).
 # Environment: ISM_FIGURE_BUILD_DIR (scratch directory, default $TMPDIR/ism_doc_figures),
 # ISM_DATA_TARBALL (default /usr/share/doc/libcgal-dev/data.tar.gz), ISM_FIGURE_DATA_EXE.
 set -euo pipefail
@@ -15,6 +16,19 @@ work="${ISM_FIGURE_BUILD_DIR:-${TMPDIR:-/tmp}/ism_doc_figures}"
 tarball="${ISM_DATA_TARBALL:-/usr/share/doc/libcgal-dev/data.tar.gz}"
 python=/usr/bin/python3
 mkdir -p "$work/data" "$work/out" "$here/fig"
+
+copy_chart() {
+  local chart="$root/benchmark/results.png"
+  if [ -f "$chart" ]; then
+    "$python" "$here/figures/render_figures.py" --copy-chart "$chart" "$here/fig/benchmark_results.png"
+  else
+    echo "note: $chart does not exist yet (run the benchmark); fig/benchmark_results.png not updated" >&2
+  fi
+}
+if [ "${1:-}" = "--chart-only" ]; then
+  copy_chart
+  exit 0
+fi
 
 for m in bunny00.off knot1.off; do
   if [ ! -f "$work/data/meshes/$m" ]; then
@@ -34,10 +48,5 @@ fi
 "$python" "$here/figures/render_figures.py" "$work/out" "$here/fig"
 cp "$work/out/stats.txt" "$here/fig/figure_data_stats.txt"
 
-chart="$root/benchmark/results.png"
-if [ -f "$chart" ]; then
-  "$python" "$here/figures/render_figures.py" --copy-chart "$chart" "$here/fig/benchmark_results.png"
-else
-  echo "note: $chart does not exist yet (run the benchmark); fig/benchmark_results.png not updated" >&2
-fi
+copy_chart
 echo "figures written to $here/fig"
