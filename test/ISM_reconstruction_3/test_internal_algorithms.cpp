@@ -149,7 +149,7 @@ void energy_test()
     if(a == b) continue;
     if(a > b) std::swap(a, b);
     if(!seen.insert({a, b}).second) continue;
-    edges.push_back({a, b, w(rng)});
+    edges.push_back({a, b, double(float(w(rng)))});  // the graph stores weights in single precision
   }
   const internal::Coupling_graph g = graph_from_edges(n, edges);
   const std::vector<signed char> s = random_signs(n, 11);
@@ -171,6 +171,21 @@ void energy_test()
   }
   CHECK(local_min, "after anneal(), a single flip still lowers the energy");
   CHECK(ea <= e, "anneal() raised the energy of a spin glass: " << ea << " > " << e);
+
+  // The overload that frees the graph gives the same signs, and the energy up to the
+  // quantisation of the weights (2^-24 max |H_e| per edge).
+  {
+    internal::Coupling_graph copy = g;
+    std::vector<signed char> r = s;
+    std::vector<char> clamped(n, 0);
+    for(std::size_t v = 0; v < n; v += 7) clamped[v] = 1;
+    std::vector<signed char> q = s;
+    const double eq = internal::anneal(g, q, clamped, internal::Annealing_schedule(), 5);
+    const double er = internal::anneal(std::move(copy), r, clamped, internal::Annealing_schedule(), 5);
+    CHECK(r == q, "anneal(Coupling_graph&&) found other signs than anneal(const Coupling_graph&)");
+    CHECK(copy.adjacency.empty() && copy.weights.empty(), "anneal(Coupling_graph&&) did not free the graph");
+    CHECK(std::abs(er - eq) < 1e-6 * (1. + std::abs(eq)), "anneal(Coupling_graph&&) energy " << er << " != " << eq);
+  }
 }
 
 // A frustrated instance (random-sign couplings on the Kuhn grid): sensitive to every

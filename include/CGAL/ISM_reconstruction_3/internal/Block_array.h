@@ -43,6 +43,19 @@ public:
       m_blocks.emplace_back(new T[block_size]);  // default-initialised: pages are touched on first write
   }
 
+  // new elements are default-initialised (left unset for trivial types)
+  void resize(std::size_t n)
+  {
+    reserve(n);
+    m_size = n;
+  }
+
+  void assign(std::size_t n, const T& t)
+  {
+    resize(n);
+    for(std::size_t i = 0; i < n; ++i) (*this)[i] = t;
+  }
+
   void push_back(const T& t)
   {
     if(m_size == capacity())

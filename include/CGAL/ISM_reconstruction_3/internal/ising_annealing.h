@@ -44,7 +44,7 @@ struct Coupling_graph
 {
   std::vector<std::size_t> offsets;  // size number_of_vertices() + 1 (or empty)
   std::vector<int> adjacency;
-  std::vector<double> weights;
+  std::vector<float> weights;  // annealing quantises them to 24 bits anyway
 
   std::size_t number_of_vertices() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
@@ -155,7 +155,10 @@ inline double ising_energy(const Coupling_graph& g, const std::vector<signed cha
 // energy uses the exact weights. The result is identical for any number of threads.
 // Cost: one copy of the graph (8 bytes per stored entry) and, per sweep, one pass over
 // it. Returns the final energy.
-inline double anneal(const Coupling_graph& g,
+namespace ising_detail {
+// `release`, if not null, is `&g`: its arrays are freed once copied into the internal
+// layout, and the returned energy is then computed from the quantised weights.
+inline double anneal(const Coupling_graph& g, Coupling_graph* release,
                      std::vector<signed char>& signs,
                      const std::vector<char>& clamped,
                      const Annealing_schedule& schedule,
@@ -175,8 +178,8 @@ inline double anneal(const Coupling_graph& g,
 
   // J = mean |H_e| over all stored entries (each undirected edge twice: same mean).
   double sum_abs = 0.;
-  for(double w : g.weights)
-    sum_abs += std::abs(w);
+  for(float w : g.weights)
+    sum_abs += std::abs(double(w));
   const double J = g.weights.empty() ? 0. : sum_abs / static_cast<double>(g.weights.size());
 
   std::size_t number_of_free = 0;
@@ -236,8 +239,8 @@ inline double anneal(const Coupling_graph& g,
   // zero-temperature pass strictly decreases an exact energy, so it cannot cycle);
   // decisions ignore energy differences below 2^-24 max |H_e| per edge.
   double max_abs = 0.;
-  for(double w : g.weights)
-    max_abs = (std::max)(max_abs, std::abs(w));
+  for(float w : g.weights)
+    max_abs = (std::max)(max_abs, std::abs(double(w)));
   CGAL_precondition(std::isfinite(max_abs));
   const double scale = 16777216. / max_abs;  // 2^24 / max |H_e|; max_abs > 0 since J > 0
   if(!std::isfinite(scale))  // weights below ~1e-301: as good as zero
@@ -265,7 +268,7 @@ inline double anneal(const Coupling_graph& g,
         if(u == v)
           continue;
         entries[j].neighbor = new_of_old[u];
-        entries[j].weight = static_cast<std::int32_t>(std::lround(g.weights[k] * scale));
+        entries[j].weight = static_cast<std::int32_t>(std::lround(double(g.weights[k]) * scale));
         ++j;
       }
     }
@@ -273,6 +276,20 @@ inline double anneal(const Coupling_graph& g,
   std::vector<signed char> s(n);
   for(std::size_t i = 0; i < n; ++i)
     s[i] = signs[static_cast<std::size_t>(old_of_new[i])];
+  // the energy of the edges between clamped vertices never changes
+  double clamped_energy = 0.;
+  if(release)
+  {
+    for(std::size_t v = 0; v < n; ++v)
+      if(!is_free(v))
+        for(std::size_t k = g.offsets[v]; k < g.offsets[v + 1]; ++k)
+        {
+          const std::size_t u = static_cast<std::size_t>(g.adjacency[k]);
+          if(u > v && !is_free(u))
+            clamped_energy += double(g.weights[k]) * signs[u] * signs[v];
+        }
+    *release = Coupling_graph();  // `g` is not used any more
+  }
 
   const std::size_t* const off = offsets.data();
   const Packed_entry* const ent = entries.get();
@@ -350,7 +367,37 @@ inline double anneal(const Coupling_graph& g,
 
   for(std::size_t i = 0; i < number_of_free; ++i)
     signs[static_cast<std::size_t>(old_of_new[i])] = s[i];
-  return ising_energy(g, signs);
+  if(!release)
+    return ising_energy(g, signs);
+  // free-free edges appear in both rows, free-clamped ones in one
+  std::int64_t twice = 0;
+  for(std::size_t i = 0; i < number_of_free; ++i)
+    for(std::size_t k = off[i]; k < off[i + 1]; ++k)
+      twice += static_cast<std::int64_t>(ent[k].weight) * sp[i] * sp[ent[k].neighbor] *
+               (static_cast<std::size_t>(ent[k].neighbor) < number_of_free ? 1 : 2);
+  return clamped_energy + 0.5 * static_cast<double>(twice) / scale;
+}
+} // namespace ising_detail
+
+inline double anneal(const Coupling_graph& g,
+                     std::vector<signed char>& signs,
+                     const std::vector<char>& clamped,
+                     const Annealing_schedule& schedule,
+                     std::uint64_t seed)
+{
+  return ising_detail::anneal(g, nullptr, signs, clamped, schedule, seed);
+}
+
+// The same, freeing the graph as soon as it is copied into the internal layout (the
+// annealing would otherwise hold it twice); the returned energy uses the weights
+// quantised to 2^-24 max |H_e|.
+inline double anneal(Coupling_graph&& g,
+                     std::vector<signed char>& signs,
+                     const std::vector<char>& clamped,
+                     const Annealing_schedule& schedule,
+                     std::uint64_t seed)
+{
+  return ising_detail::anneal(g, &g, signs, clamped, schedule, seed);
 }
 
 /// \endcond

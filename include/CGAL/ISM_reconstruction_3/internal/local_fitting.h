@@ -23,18 +23,18 @@ namespace internal {
 // coplanarity error eps = l0 / (l0 + l1 + l2).
 struct Plane_fit
 {
-  std::array<double, 3> normal = {{0., 0., 1.}};
+  // Single precision for the unit normal and the error keeps a fit at 24 bytes (one per
+  // cell of the triangulation, the largest array after the cells); the offset is computed
+  // from the rounded normal, so the plane still passes through the points' barycenter.
+  std::array<float, 3> normal = {{0.f, 0.f, 1.f}};
+  float coplanarity_error = 1.f; // eps in [0, 1/3]; 1 = no fit yet
   double offset = 0.;            // the plane is {x : normal . x = offset}
-  double coplanarity_error = 1.; // eps in [0, 1/3]; 1 = no fit yet
 
   // the side of the plane `x` lies on: +1 or -1 (a point on the plane counts as +1)
-  int side(const std::array<double, 3>& x) const
-  {
-    return normal[0] * x[0] + normal[1] * x[1] + normal[2] * x[2] >= offset ? 1 : -1;
-  }
+  int side(const std::array<double, 3>& x) const { return signed_distance(x) >= 0 ? 1 : -1; }
   double signed_distance(const std::array<double, 3>& x) const
   {
-    return normal[0] * x[0] + normal[1] * x[1] + normal[2] * x[2] - offset;
+    return double(normal[0]) * x[0] + double(normal[1]) * x[1] + double(normal[2]) * x[2] - offset;
   }
 };
 
@@ -79,10 +79,10 @@ public:
     if(!(sum > 0) || !std::isfinite(sum)) return false;
     const Eigen::Vector3d n = solver.eigenvectors().col(0).normalized();
     if(!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) return false;
-    f.normal = {{ n[0], n[1], n[2] }};
+    f.normal = {{ float(n[0]), float(n[1]), float(n[2]) }};
     const double b[3] = { c[0] + m_ref[0], c[1] + m_ref[1], c[2] + m_ref[2] };
-    f.offset = n[0] * b[0] + n[1] * b[1] + n[2] * b[2];
-    f.coplanarity_error = l[0] / sum;
+    f.offset = double(f.normal[0]) * b[0] + double(f.normal[1]) * b[1] + double(f.normal[2]) * b[2];
+    f.coplanarity_error = float(l[0] / sum);
     return true;
   }
 };

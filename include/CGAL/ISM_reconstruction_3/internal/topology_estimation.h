@@ -33,9 +33,9 @@ struct Topology_input
 // where S^s_v is the side of v with respect to the plane of s; an empty leaf proposes the
 // same sign for all its vertices with eps_s = eps_empty. Built per vertex from the leaves
 // around it, so each edge's weight is summed in one place without a global hash.
-template <class Triangulation, class CountFunction>
+template <class Triangulation, class FitArray, class CountFunction>
 Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
-                                    const std::vector<Plane_fit>& fits, CountFunction count,
+                                    const FitArray& fits, CountFunction count,
                                     const Topology_input& in)
 {
   typedef typename Triangulation::Cell_index Cell_index;
@@ -43,8 +43,8 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
     if(tr.is_leaf(c) && count(c) > 0)
     {
-      eps_min = (std::min)(eps_min, fits[c].coplanarity_error);
-      eps_max = (std::max)(eps_max, fits[c].coplanarity_error);
+      eps_min = (std::min)(eps_min, double(fits[c].coplanarity_error));
+      eps_max = (std::max)(eps_max, double(fits[c].coplanarity_error));
     }
   if(!(eps_max >= eps_min)) { eps_min = 0; eps_max = 1; }
   const double range = eps_max > eps_min ? eps_max - eps_min : 1.;
@@ -57,58 +57,68 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
   std::vector<Cell_index> cells;
   tr.leaves_around_vertices(offsets, cells);
   const std::size_t n = tr.number_of_vertices();
-  // Vertices are cut into chunks built independently (in parallel with TBB) and then
-  // concatenated in order, so the graph is the same for any number of threads.
-  const std::size_t chunk = 4096, number_of_chunks = (n + chunk - 1) / chunk;
-  std::vector<Coupling_graph> parts(number_of_chunks);
-  auto build_chunk = [&](std::size_t k) {
-    Coupling_graph& part = parts[k];
-    const std::size_t b = k * chunk, e = (std::min)(n, b + chunk);
-    part.offsets.assign(e - b + 1, 0);
-    part.adjacency.reserve(15 * (e - b));
-    part.weights.reserve(15 * (e - b));
-    for(std::size_t u = b; u < e; ++u)
+  // The row of vertex u: its neighbours and the summed weights (in double precision).
+  auto build_row = [&](std::size_t u, std::vector<int>& neighbors, std::vector<double>& row) {
+    neighbors.clear();
+    row.clear();
+    for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
     {
-      const std::size_t first = part.adjacency.size();
-      for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
+      const Cell_index c = cells[i];
+      const bool empty = count(c) == 0;
+      const double w = empty ? w_empty : weight(c);
+      const int su = empty ? 1 : fits[c].side(xyz[u]);
+      for(int l = 0; l < 4; ++l)
       {
-        const Cell_index c = cells[i];
-        const bool empty = count(c) == 0;
-        const double w = empty ? w_empty : weight(c);
-        const int su = empty ? 1 : fits[c].side(xyz[u]);
-        for(int l = 0; l < 4; ++l)
-        {
-          const int v = tr.vertex(c, l);
-          if(std::size_t(v) == u) continue;
-          const int sv = empty ? 1 : fits[c].side(xyz[v]);
-          const double h = -double(su * sv) * w;
-          std::size_t j = first;
-          while(j < part.adjacency.size() && part.adjacency[j] != v) ++j;
-          if(j == part.adjacency.size()) { part.adjacency.push_back(v); part.weights.push_back(h); }
-          else part.weights[j] += h;
-        }
+        const int v = tr.vertex(c, l);
+        if(std::size_t(v) == u) continue;
+        const int sv = empty ? 1 : fits[c].side(xyz[v]);
+        const double h = -double(su * sv) * w;
+        std::size_t j = 0;
+        while(j < neighbors.size() && neighbors[j] != v) ++j;
+        if(j == neighbors.size()) { neighbors.push_back(v); row.push_back(h); }
+        else row[j] += h;
       }
-      part.offsets[u - b + 1] = part.adjacency.size();
     }
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(std::size_t(0), number_of_chunks, build_chunk);
-#else
-  for(std::size_t k = 0; k < number_of_chunks; ++k) build_chunk(k);
-#endif
+  // Two passes over chunks of vertices (in parallel with TBB): the degrees, then the rows
+  // written in place. Building the rows twice costs less than holding the graph twice
+  // (per-chunk parts concatenated), which was the peak of memory of the whole method.
+  // Each row depends only on its vertex: the graph is the same for any number of threads.
+  const std::size_t chunk = 4096, number_of_chunks = (n + chunk - 1) / chunk;
   Coupling_graph g;
   g.offsets.assign(n + 1, 0);
-  std::size_t total = 0;
-  for(const Coupling_graph& part : parts) total += part.adjacency.size();
-  g.adjacency.reserve(total);
-  g.weights.reserve(total);
-  for(std::size_t k = 0; k < number_of_chunks; ++k)
-  {
-    const std::size_t base = g.adjacency.size();
-    for(std::size_t i = 1; i < parts[k].offsets.size(); ++i) g.offsets[k * chunk + i] = base + parts[k].offsets[i];
-    g.adjacency.insert(g.adjacency.end(), parts[k].adjacency.begin(), parts[k].adjacency.end());
-    g.weights.insert(g.weights.end(), parts[k].weights.begin(), parts[k].weights.end());
-  }
+  auto for_each_chunk = [&](const auto& f) {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(std::size_t(0), number_of_chunks, [&](std::size_t k) { f(k * chunk, (std::min)(n, (k + 1) * chunk)); });
+#else
+    for(std::size_t k = 0; k < number_of_chunks; ++k) f(k * chunk, (std::min)(n, (k + 1) * chunk));
+#endif
+  };
+  for_each_chunk([&](std::size_t b, std::size_t e) {
+    std::vector<int> neighbors;
+    std::vector<double> row;
+    for(std::size_t u = b; u < e; ++u)
+    {
+      build_row(u, neighbors, row);
+      g.offsets[u + 1] = neighbors.size();
+    }
+  });
+  for(std::size_t u = 0; u < n; ++u) g.offsets[u + 1] += g.offsets[u];
+  g.adjacency.resize(g.offsets[n]);
+  g.weights.resize(g.offsets[n]);
+  for_each_chunk([&](std::size_t b, std::size_t e) {
+    std::vector<int> neighbors;
+    std::vector<double> row;
+    for(std::size_t u = b; u < e; ++u)
+    {
+      build_row(u, neighbors, row);
+      for(std::size_t j = 0; j < neighbors.size(); ++j)
+      {
+        g.adjacency[g.offsets[u] + j] = neighbors[j];
+        g.weights[g.offsets[u] + j] = float(row[j]);
+      }
+    }
+  });
   return g;
 }
 
