@@ -260,6 +260,10 @@ const std::vector<Option>& options()
     ISM_REAL_OPTION("--minimum-island-fraction", minimum_island_fraction,
                     "inside (or enclosed outside) clusters of fewer vertices than this fraction of the "
                     "largest inside cluster are flipped; 0: keep all"),
+    ISM_INTEGER_OPTION("--memory-limit", memory_limit,
+                       "bytes the reconstruction may use on top of the input; 0: what the machine allows "
+                       "(physical memory, ulimit -v and -d, cgroup limit). Beyond it the run stops with an "
+                       "error before allocating"),
   };
   return table;
 }
@@ -721,7 +725,7 @@ int run(int argc, char** argv)
 
   CGAL::Real_timer timer;
   timer.start();
-  const std::vector<Point> points = read_input(cl.input);
+  std::vector<Point> points = read_input(cl.input);
   const double read_time = timer.time();
 
   Progress progress(!cl.quiet && ::isatty(STDERR_FILENO));
@@ -730,9 +734,15 @@ int run(int argc, char** argv)
   std::unique_ptr<Function> function;
   try
   {
-    function.reset(new Function(points));
+    function.reset(new Function(points, CGAL::parameters::memory_limit(settings.memory_limit)));
+    // the function holds its own copy: not keeping two lowers the peak memory
+    std::vector<Point>().swap(points);
   }
   catch(const std::invalid_argument& e)
+  {
+    input_error("'" + cl.input + "': " + e.what());
+  }
+  catch(const std::length_error& e)  // the memory guard
   {
     input_error("'" + cl.input + "': " + e.what());
   }
@@ -745,6 +755,10 @@ int run(int argc, char** argv)
     usage_error(e.what());
   }
   catch(const std::runtime_error& e)
+  {
+    input_error("'" + cl.input + "': " + e.what());
+  }
+  catch(const std::length_error& e)  // the memory guard
   {
     input_error("'" + cl.input + "': " + e.what());
   }

@@ -10,7 +10,9 @@
 
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/ISM_reconstruction_3/internal/settings.h>
+#include <CGAL/ISM_reconstruction_3/internal/Block_array.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
+#include <CGAL/ISM_reconstruction_3/internal/memory_budget.h>
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_input.h>
 #include <CGAL/ISM_reconstruction_3/internal/distance_estimation.h>
@@ -110,6 +112,8 @@ public:
     \throws std::invalid_argument if the range is empty, holds a NaN or infinite
     coordinate, has fewer distinct points than a cell needs, or all its points lie on a
     plane or a line (no closed surface can be reconstructed from them).
+    \throws std::length_error if the copy of the points would not fit in memory (see the named
+    parameter `memory_limit`)
   */
   template <class PointRange, class NamedParameters = parameters::Default_named_parameters>
   explicit ISM_reconstruction_function(const PointRange& points,
@@ -118,6 +122,9 @@ public:
     typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
     typename NP_helper::Const_point_map point_map = NP_helper::get_const_point_map(points, np);
     m_gt = parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, internal_np::geom_traits));
+    ISM_reconstruction_3::internal::Memory_guard::check_point_copy(
+        parameters::choose_parameter(parameters::get_parameter(np, ISM_reconstruction_3::internal_np::memory_limit), std::size_t(0)),
+        std::size_t(points.size()));
     m_points.reserve(points.size());
     for(const auto& item : points)
     {
@@ -140,6 +147,8 @@ public:
     \return `false` if the `callback` cancelled the run.
     \throws std::invalid_argument for a parameter out of range
     \throws std::runtime_error if no inside region was found
+    \throws std::length_error, before the allocation, if the points or the refinement would
+    need more memory than the process may use (see the named parameter `memory_limit`)
   */
   template <class NamedParameters = parameters::Default_named_parameters>
   bool compute_implicit_function(const NamedParameters& np = parameters::default_values())
@@ -176,6 +185,10 @@ public:
           *m_tr, m_sign, ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr), m_settings.minimum_island_fraction);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     m_stats.topology_time += timer.time();
+    // the per-cell point ranges and fits only serve refinement and topology: freeing them
+    // lowers the peak, reached later while the surface is extracted (32 bytes per cell)
+    m_range = decltype(m_range)();
+    m_fit = decltype(m_fit)();
     if(!report(0.9)) return false;
 
     timer.reset();
@@ -264,6 +277,9 @@ private:
     sync_vertices();
     m_sign.assign(tr.number_of_vertices(), 1);
 
+    // refuses, before allocating it, what would not fit in memory: up front from the number
+    // of points, then whenever the number of cells grew by 1/8 (memory_budget.h, issue 8)
+    I::Memory_guard memory_guard(m_settings.memory_limit, m_points.size(), m_settings.maximum_depth);
     // each cell owns the contiguous range [m_range[c][0], m_range[c][1]) of m_order
     m_order.resize(m_points.size());
     for(std::size_t i = 0; i < m_points.size(); ++i) m_order[i] = std::uint32_t(i);
@@ -299,8 +315,6 @@ private:
     const std::size_t report_every = 4096;
     std::size_t bisections = 0;
 
-    m_range.reserve(4 * m_points.size() / std::size_t(m_settings.min_points_per_cell) + 64);
-    m_fit.reserve(m_range.capacity());
     auto on_bisect = [&](Cell_index p, Cell_index c0, Cell_index c1) {
       if(m_range.size() < tr.number_of_cells())
       {
@@ -340,6 +354,7 @@ private:
       if(!tr.is_leaf(c) || stop(c))
         continue;
       tr.bisect(c, on_bisect);
+      memory_guard.check(tr.number_of_cells());
       // topology during refinement (the paper's multigrid): every k bisections, or
       // whenever the number of leaves doubled (default). The first pass anneals from the
       // full temperature; later ones start cold from the previous signs. Measured on
@@ -414,8 +429,9 @@ private:
     m_sign.resize(m_tr->number_of_vertices(), 1);
     I::Topology_input in;
     in.empty_cell_error = m_settings.empty_cell_error;
-    const I::Coupling_graph graph = I::build_coupling_graph(*m_tr, m_vertex_xyz, m_fit,
+    I::Coupling_graph graph = I::build_coupling_graph(*m_tr, m_vertex_xyz, m_fit,
         [&](Cell_index c) { return count(c); }, in);
+    m_stats.all_outside_energy = I::ising_energy(graph, std::vector<signed char>(m_sign.size(), 1));
     std::vector<char> clamped;
     const std::vector<char> boundary = I::box_boundary_vertices(*m_tr);
     if(m_settings.clamp_box_boundary)
@@ -424,7 +440,7 @@ private:
       for(std::size_t v = 0; v < boundary.size(); ++v)
         if(boundary[v]) m_sign[v] = 1;
     }
-    m_stats.final_energy = I::anneal(graph, m_sign, clamped, schedule,
+    m_stats.final_energy = I::anneal(std::move(graph), m_sign, clamped, schedule,
                                      m_settings.random_seed + 0x9E3779B97F4A7C15ULL * m_stats.number_of_topology_passes);
     ++m_stats.number_of_topology_passes;
     // D is symmetric under S -> -S: the box boundary is outside (a no-op when clamped)
@@ -433,8 +449,6 @@ private:
       if(boundary[v]) boundary_sum += m_sign[v];
     if(boundary_sum < 0)
       for(signed char& s : m_sign) s = static_cast<signed char>(-s);
-    std::vector<signed char> outside(m_sign.size(), 1);
-    m_stats.all_outside_energy = I::ising_energy(graph, outside);
     m_stats.number_of_leaves = m_tr->number_of_leaves();
     m_stats.number_of_vertices = m_tr->number_of_vertices();
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
@@ -486,8 +500,9 @@ private:
   }
 
   std::vector<std::uint32_t> m_order;
-  std::vector<std::array<std::uint32_t, 2> > m_range;
-  std::vector<ISM_reconstruction_3::internal::Plane_fit> m_fit;
+  // per cell, in blocks: growing them never copies (as the triangulation's cells)
+  ISM_reconstruction_3::internal::Block_array<std::array<std::uint32_t, 2> > m_range;
+  ISM_reconstruction_3::internal::Block_array<ISM_reconstruction_3::internal::Plane_fit> m_fit;
 };
 
 } // namespace CGAL

@@ -196,6 +196,11 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamType{`double`, in [-1, 1]}
       \cgalParamDefault{`-0.53`}
     \cgalParamNEnd
+    \cgalParamNBegin{memory_limit}
+      \cgalParamDescription{the number of bytes the reconstruction may add to what the process already holds; `0`: what the machine allows, the least of the physical memory, the limits `RLIMIT_AS` (`ulimit -v`) and `RLIMIT_DATA` (`ulimit -d`) and the cgroup memory limits (on Linux; no limit elsewhere). The memory is estimated up front from the number of points, then whenever the number of cells grew by 1/8 (about 160 bytes per cell and 160 per point); beyond the limit, `std::length_error` is thrown before the allocation, with the memory needed and available in its message. A value larger than what the machine allows does not raise that.}
+      \cgalParamType{`std::size_t`}
+      \cgalParamDefault{`0`}
+    \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
       \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
@@ -222,6 +227,8 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
   \throws std::invalid_argument for bad input (no points, a non-finite coordinate, too few
           distinct points, all points on a plane or a line) or a parameter out of range
   \throws std::runtime_error if no inside region was found
+  \throws std::length_error, before the allocation, if the points or the refinement would need
+          more memory than the process may use (`memory_limit`)
 
   \sa `ISM_reconstruction_function`
   \sa `ISM_reconstruction_3::Settings`

@@ -51,6 +51,9 @@ struct Settings
   /*! how the value of a vertex is estimated (its sign comes from the Ising model) */
   Distance_estimate distance_estimate = LOCAL_PLANE_DISTANCE;
   double box_margin = 0.1;                ///< margin around the points, as a fraction of their largest extent
+  /*! bytes the reconstruction may add to what the process holds; `0`: what the machine allows (physical
+      memory, `ulimit -v` and `-d`, cgroup limits). A larger value does not raise those limits. */
+  std::size_t memory_limit = 0;
   double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
@@ -139,6 +142,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.distance_estimate = choose_parameter(get_parameter(np, inp::distance_estimate), d.distance_estimate);
   s.box_margin = choose_parameter(get_parameter(np, inp::box_margin), d.box_margin);
   s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
+  s.memory_limit = choose_parameter(get_parameter(np, inp::memory_limit), d.memory_limit);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;
 }
