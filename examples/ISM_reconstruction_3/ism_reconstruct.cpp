@@ -48,6 +48,9 @@
 
 #include <sys/stat.h>
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
@@ -835,6 +838,14 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+#if defined(__GLIBC__)
+  // glibc raises its mmap threshold up to 32 MB each time a large block is freed; the
+  // arrays of each topology pass (tens of MB) then come from the heap and leave holes in
+  // it that are never returned. A fixed threshold keeps them mapped and unmapped on free.
+  // Measured on 437,645 points: peak resident memory 240 MB -> 212 MB (128 kB:
+  // 209 MB, 4 MB: 234 MB), user time unchanged within the noise.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   int code = SUCCESS;
