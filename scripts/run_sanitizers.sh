@@ -9,14 +9,19 @@
 #   label no_sanitizer   - robustness_memory: it gives each case an address-space budget
 #                          with setrlimit(RLIMIT_AS), which ASan's terabytes of shadow
 #                          mappings make impossible; it runs in the normal (Release) build.
+#   benchmark_quick      - not built (ISM_BUILD_BENCHMARKS=OFF): it runs CGAL's Poisson,
+#                          Advancing Front, Scale Space and alpha wrapping beside ISM; their
+#                          code is not the package's, and the package code it calls is the
+#                          same ism_surface_reconstruction() the reconstruction tests check.
 #   $ISM_ASAN_EXCLUDE    - an extra CTest -E regular expression, for tests found too slow
 #                          under ASan (none at the time of writing; say why when adding one).
 # Extra arguments go to ctest (e.g. -R robustness).
 #
-# Measured (2-core machine, ISM_JOBS=2, other jobs keeping the load average at 2 to 4): build
-# 690 s, at most 4.7 GB resident for one compiler (RelWithDebInfo's -O2 -g took 3807 s under
-# heavier load, and 6.3 GB); CTest 363 s (the longest: reconstruction 243 s, robustness_corpus
-# 221 s); total 17.5 min. scripts/run_tests.sh runs it after the Release tests (CI).
+# Measured from a clean build directory (2-core machine, ISM_JOBS=2, other jobs using the
+# cores): build 690 s + CTest 363 s = 17.5 min at a load average of 2 to 3, 1589 s + 479 s =
+# 34.5 min at a load average of 4; at most 4.7 GB resident for one compiler (-O2 -g: 3807 s
+# under load and 6.3 GB). The longest tests: reconstruction (243 s at load 2) and
+# robustness_corpus (221 s). scripts/run_tests.sh runs it after the Release tests (CI).
 #
 # Environment: ISM_ASAN_BUILD_DIR, ISM_JOBS (default: nproc), ISM_ASAN_EXCLUDE.
 set -euo pipefail

@@ -4,10 +4,12 @@
 # build directory (scripts/run_sanitizers.sh). The script fails if either run fails; both
 # always run. Extra arguments go to both ctest runs (e.g. -R robustness).
 #
-# Measured on the 2-core development machine, other jobs keeping the load average at 2 to 4:
-# Release build + CTest about 13 min; sanitizer build 690 s (11.5 min, ISM_JOBS=2, at most
-# 4.7 GB resident for one compiler) + its CTest 363 s (6 min): about 31 min in all, within
-# CI's 90 minutes on 2 cores.
+# Measured from clean build directories on the 2-core development machine, while other jobs
+# kept the load average at about 4: 48 min 29 s wall in all (50.6 min of CPU: 2744 s user,
+# 294 s system; at most 4.7 GB resident, one sanitizer compiler): Release build + CTest
+# (113 s) about 14 min, sanitizer build 1589 s + its CTest 479 s = 34.5 min. At a load
+# average of 2 the sanitizer part took 17.5 min (build 690 s, CTest 363 s). Either way
+# within CI's 90 minutes on 2 cores.
 #
 # Environment: ISM_TEST_BUILD_DIR (default build-tests); ISM_SANITIZERS=0 skips the
 # sanitizer run (a quicker local check); see scripts/run_sanitizers.sh for its own.

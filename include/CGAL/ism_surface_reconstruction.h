@@ -197,7 +197,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`-0.53`}
     \cgalParamNEnd
     \cgalParamNBegin{memory_limit}
-      \cgalParamDescription{the number of bytes the reconstruction may add to what the process already holds; `0`: what the machine allows, the least of the physical memory, the limits `RLIMIT_AS` (`ulimit -v`) and `RLIMIT_DATA` (`ulimit -d`) and the cgroup memory limits (on Linux; no limit elsewhere). The memory is estimated up front from the number of points, then whenever the number of cells grew by 1/8 (about 160 bytes per cell and 160 per point); beyond the limit, `std::length_error` is thrown before the allocation, with the memory needed and available in its message. A value larger than what the machine allows does not raise that.}
+      \cgalParamDescription{the number of bytes the reconstruction may add to what the process already holds; `0`: what the machine allows, the least of the physical memory, the limits `RLIMIT_AS` (`ulimit -v`) and `RLIMIT_DATA` (`ulimit -d`) and the cgroup memory limits (on Linux; no limit elsewhere). The memory is estimated up front from the number of points, then whenever the number of cells grew by 1/8 (64 MiB + 160 bytes per point + 160 bytes per cell, measured at the peak of the whole method with some margin); beyond the limit, `std::length_error` is thrown before the allocation, with the memory needed and available in its message. A value larger than what the machine allows does not raise that.}
       \cgalParamType{`std::size_t`}
       \cgalParamDefault{`0`}
     \cgalParamNEnd
