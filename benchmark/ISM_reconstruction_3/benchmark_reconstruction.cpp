@@ -122,8 +122,11 @@ struct Run {
 // points, in either orientation: the scale-space alpha-shape mesher gives both sides of a
 // facet) are kept once. If the soup is then not a valid 2-manifold polygon mesh,
 // orient_polygon_soup duplicates what it must (non-manifold vertices and edges become
-// borders) and the run is marked non-manifold.
+// borders) and the run is marked non-manifold. Its time is the run's glue time, recorded
+// as the stage "to_mesh" and not counted in the method's time.
 void soup_to_mesh(std::vector<Point_3> points, std::vector<std::array<std::size_t, 3>> faces, Run& run) {
+  CGAL::Real_timer t;
+  t.start();
   const std::size_t duplicates = PMP::merge_duplicate_polygons_in_polygon_soup(points, faces);
   if (duplicates > 0) run.note = std::to_string(duplicates) + " duplicate triangles merged";
   run.soup_was_manifold = PMP::is_polygon_soup_a_polygon_mesh(faces);
@@ -131,15 +134,23 @@ void soup_to_mesh(std::vector<Point_3> points, std::vector<std::array<std::size_
   PMP::polygon_soup_to_polygon_mesh(points, faces, run.mesh);
   PMP::remove_isolated_vertices(run.mesh);
   run.mesh.collect_garbage();
+  run.glue_time = t.time();
+  run.stages.emplace_back("to_mesh", run.glue_time);
+}
+
+// The positions of the input, the only thing the methods without normals are given.
+std::vector<Point_3> positions(const std::vector<Pwn>& input) {
+  std::vector<Point_3> pts;
+  pts.reserve(input.size());
+  for (const Pwn& p : input) pts.push_back(p.first);
+  return pts;
 }
 
 Run run_ism(const std::vector<Pwn>& input, bool paper) {
   Run run;
   CGAL::Real_timer t;
   t.start();
-  std::vector<Point_3> pts;
-  pts.reserve(input.size());
-  for (const Pwn& p : input) pts.push_back(p.first);
+  std::vector<Point_3> pts = positions(input);
   CGAL::ISM_reconstruction_function<K> f(pts);
   const CGAL::ISM_reconstruction_3::Settings s =
       paper ? CGAL::ISM_reconstruction_3::Settings::paper() : CGAL::ISM_reconstruction_3::Settings();
@@ -265,16 +276,11 @@ Run run_advancing_front(const std::vector<Pwn>& input) {
   Run run;
   CGAL::Real_timer t;
   t.start();
-  std::vector<Point_3> pts;
-  pts.reserve(input.size());
-  for (const Pwn& p : input) pts.push_back(p.first);
+  std::vector<Point_3> pts = positions(input);
   std::vector<std::array<std::size_t, 3>> faces;
   CGAL::advancing_front_surface_reconstruction(pts.begin(), pts.end(), std::back_inserter(faces));
   run.stages.emplace_back("reconstruction", t.time());
-  t.reset();
   soup_to_mesh(std::move(pts), std::move(faces), run);
-  run.glue_time = t.time();
-  run.stages.emplace_back("to_mesh", run.glue_time);
   return run;
 }
 
@@ -285,9 +291,7 @@ Run run_scale_space(const std::vector<Pwn>& input) {
   Run run;
   CGAL::Real_timer t;
   t.start();
-  std::vector<Point_3> pts;
-  pts.reserve(input.size());
-  for (const Pwn& p : input) pts.push_back(p.first);
+  std::vector<Point_3> pts = positions(input);
   Reconstruction r(pts.begin(), pts.end());
   r.increase_scale(4);
   run.stages.emplace_back("smoothing", t.time());
@@ -300,8 +304,6 @@ Run run_scale_space(const std::vector<Pwn>& input) {
   faces.reserve(r.number_of_facets());
   for (auto it = r.facets_begin(); it != r.facets_end(); ++it) faces.push_back({{(*it)[0], (*it)[1], (*it)[2]}});
   soup_to_mesh(std::move(out_pts), std::move(faces), run);
-  run.glue_time = t.time();
-  run.stages.emplace_back("to_mesh", run.glue_time);
   return run;
 }
 
@@ -309,9 +311,7 @@ Run run_alpha_wrap(const std::vector<Pwn>& input) {
   Run run;
   CGAL::Real_timer t;
   t.start();
-  std::vector<Point_3> pts;
-  pts.reserve(input.size());
-  for (const Pwn& p : input) pts.push_back(p.first);
+  std::vector<Point_3> pts = positions(input);
   const CGAL::Bbox_3 b = CGAL::bbox_3(pts.begin(), pts.end());
   const double diag = ISM_eval::diagonal(b);
   CGAL::alpha_wrap_3(pts, diag / 100.0, diag / 3000.0, run.mesh);
