@@ -21,12 +21,15 @@
 // method ran, before any scoring; "base_mb" is the resident memory before it started
 // (truth mesh and input points). time_total is the method's wall time; for the methods that
 // output a triangle soup (advancing_front, scale_space) it excludes this program's conversion
-// of the soup to a Surface_mesh (stage "to_mesh", reported apart).
+// of the soup to a Surface_mesh (stage "to_mesh", reported apart). Like ism_reconstruct,
+// the program restarts itself with glibc's large blocks backed by transparent huge pages
+// (internal/huge_pages.h): the same for every method.
 
 #include "ism_evaluation.h"
 
 #include <CGAL/ism_surface_reconstruction.h>
 #include <CGAL/ism_orient_normals.h>
+#include <CGAL/ISM_reconstruction_3/internal/huge_pages.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Scale_space_surface_reconstruction_3.h>
@@ -330,6 +333,7 @@ int usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CGAL::ISM_reconstruction_3::internal::restart_with_huge_pages(argv);
   std::string method, mesh_file, case_name, output_file;
   std::size_t n_points = 0, samples = 100000, queries = 100000;
   double noise = 0;

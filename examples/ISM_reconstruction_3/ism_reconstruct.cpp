@@ -27,6 +27,7 @@
 #include <CGAL/ism_surface_reconstruction.h>
 #include <CGAL/ISM_reconstruction_function.h>
 #include <CGAL/ISM_reconstruction_3/IO/tet_mesh_io.h>
+#include <CGAL/ISM_reconstruction_3/internal/huge_pages.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -861,6 +862,7 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+  CGAL::ISM_reconstruction_3::internal::restart_with_huge_pages(argv);
 #if defined(__GLIBC__)
   // glibc raises its mmap threshold up to 32 MB each time a large block is freed; the
   // arrays of each topology pass (tens of MB) then come from the heap and leave holes in

@@ -30,6 +30,10 @@
 #include <string>
 #include <vector>
 
+#if defined(__GLIBC__)
+#include <malloc.h>  // malloc_trim
+#endif
+
 namespace CGAL {
 
 /*!
@@ -189,6 +193,12 @@ public:
     // lowers the peak, reached later while the surface is extracted (32 bytes per cell)
     m_range = decltype(m_range)();
     m_fit = decltype(m_fit)();
+#if defined(__GLIBC__)
+    // their blocks (under 1 MB each) come from the heap, between blocks still in use, and
+    // glibc keeps them: without this, freeing 64 MB lowered the resident memory by 2 MB
+    // and the surface extraction set a new peak above the topology's (dragon: 228 -> 212 MB)
+    malloc_trim(0);
+#endif
     if(!report(0.9)) return false;
 
     timer.reset();
@@ -280,9 +290,9 @@ private:
     // refuses, before allocating it, what would not fit in memory: up front from the number
     // of points, then whenever the number of cells grew by 1/8 (memory_budget.h, issue 8)
     I::Memory_guard memory_guard(m_settings.memory_limit, m_points.size(), m_settings.maximum_depth);
-    // each cell owns the contiguous range [m_range[c][0], m_range[c][1]) of m_order
-    m_order.resize(m_points.size());
-    for(std::size_t i = 0; i < m_points.size(); ++i) m_order[i] = std::uint32_t(i);
+    // each cell owns the contiguous range [m_range[c][0], m_range[c][1]) of m_cell_points
+    m_cell_points.clear();
+    m_cell_points.reserve(m_points.size());
     m_range.assign(6, {{0, 0}});
     m_fit.assign(6, I::Plane_fit());
     {
@@ -292,12 +302,11 @@ private:
         const Cell_index r = tr.locate_root(point_of(i));
         by_root[r < 0 ? 0 : r].push_back(i);  // r < 0 cannot happen: the box holds every point
       }
-      std::size_t k = 0;
       for(int r = 0; r < 6; ++r)
       {
-        m_range[r][0] = std::uint32_t(k);
-        for(std::uint32_t i : by_root[r]) m_order[k++] = i;
-        m_range[r][1] = std::uint32_t(k);
+        m_range[r][0] = std::uint32_t(m_cell_points.size());
+        for(std::uint32_t i : by_root[r]) m_cell_points.push_back(m_points[i]);
+        m_range[r][1] = std::uint32_t(m_cell_points.size());
       }
     }
     for(Cell_index r = 0; r < 6; ++r) fit(r, -1);
@@ -321,9 +330,9 @@ private:
         m_range.resize(tr.number_of_cells());
         m_fit.resize(tr.number_of_cells());
       }
-      const auto b = m_order.begin() + m_range[p][0], e = m_order.begin() + m_range[p][1];
-      const auto mid = std::partition(b, e, [&](std::uint32_t i) { return tr.child_side(p, point_of(i)) == 0; });
-      const std::uint32_t m = std::uint32_t(mid - m_order.begin());
+      const auto b = m_cell_points.begin() + m_range[p][0], e = m_cell_points.begin() + m_range[p][1];
+      const auto mid = std::partition(b, e, [&](const Xyz& x) { return tr.child_side(p, Point(x[0], x[1], x[2])) == 0; });
+      const std::uint32_t m = std::uint32_t(mid - m_cell_points.begin());
       m_range[c0] = {{ m_range[p][0], m }};
       m_range[c1] = {{ m, m_range[p][1] }};
       fit(c0, p);
@@ -385,7 +394,7 @@ private:
         if(!report(0.7 * (std::min)(1., guess))) return false;
       }
     }
-    std::vector<std::uint32_t>().swap(m_order);
+    std::vector<Xyz>().swap(m_cell_points);
     return true;
   }
 
@@ -398,8 +407,8 @@ private:
   {
     if(count(c) >= std::size_t(m_settings.min_points_per_cell))
     {
-      ISM_reconstruction_3::internal::Moments moments(m_points[m_order[m_range[c][0]]]);
-      for(std::uint32_t i = m_range[c][0]; i < m_range[c][1]; ++i) moments.add(m_points[m_order[i]]);
+      ISM_reconstruction_3::internal::Moments moments(m_cell_points[m_range[c][0]]);
+      for(std::uint32_t i = m_range[c][0]; i < m_range[c][1]; ++i) moments.add(m_cell_points[i]);
       if(moments.fit(m_fit[c])) return;
     }
     m_fit[c] = parent >= 0 ? m_fit[parent] : ISM_reconstruction_3::internal::Plane_fit();
@@ -499,7 +508,12 @@ private:
     return f;
   }
 
-  std::vector<std::uint32_t> m_order;
+  // The points themselves, not indices to them, are partitioned as cells are bisected:
+  // a cell's points then sit together in memory. With an index array every level read
+  // the points at random, a cache miss per point and level (dragon, 437k points:
+  // refinement 1.65 -> 1.5 s). A copy, so that m_points keeps its order and a second run
+  // gives the same result; freed after the refinement, below the peak of the topology.
+  std::vector<Xyz> m_cell_points;
   // per cell, in blocks: growing them never copies (as the triangulation's cells)
   ISM_reconstruction_3::internal::Block_array<std::array<std::uint32_t, 2> > m_range;
   ISM_reconstruction_3::internal::Block_array<ISM_reconstruction_3::internal::Plane_fit> m_fit;

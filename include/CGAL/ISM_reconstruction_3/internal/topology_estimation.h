@@ -19,6 +19,10 @@
 #include <array>
 #include <vector>
 
+#if defined(__GLIBC__)
+#include <malloc.h>  // malloc_trim
+#endif
+
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 namespace internal {
@@ -53,10 +57,38 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
     return eps_max > eps_min ? (eps_max - fits[c].coplanarity_error) / range : 1.;
   };
 
+  const std::size_t n = tr.number_of_vertices();
+  const std::size_t number_of_cells = tr.number_of_cells();
+  const std::size_t chunk = 4096;
+  auto for_each_chunk = [&](std::size_t size, const auto& f) {
+    const std::size_t number_of_chunks = (size + chunk - 1) / chunk;
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(std::size_t(0), number_of_chunks, [&](std::size_t k) { f(k * chunk, (std::min)(size, (k + 1) * chunk)); });
+#else
+    for(std::size_t k = 0; k < number_of_chunks; ++k) f(k * chunk, (std::min)(size, (k + 1) * chunk));
+#endif
+  };
+  // The sides of its 4 vertices (bit l set: vertex l on the negative side) and
+  // emptiness (bit 4) of every leaf, computed once: each leaf is met from each of its
+  // vertices, twice, and reading the plane and the 4 vertex positions there at random was
+  // half the time of the whole topology step (dragon, 437k points). One byte per cell.
+  enum { empty_bit = 16 };
+  std::vector<unsigned char> code(number_of_cells, 0);
+  for_each_chunk(number_of_cells, [&](std::size_t b, std::size_t e) {
+    for(std::size_t c = b; c < e; ++c)
+    {
+      if(!tr.is_leaf(Cell_index(c))) continue;
+      if(count(Cell_index(c)) == 0) { code[c] = empty_bit; continue; }
+      unsigned char bits = 0;
+      for(int l = 0; l < 4; ++l)
+        if(fits[Cell_index(c)].side(xyz[tr.vertex(Cell_index(c), l)]) < 0) bits |= (unsigned char)(1 << l);
+      code[c] = bits;
+    }
+  });
+
   std::vector<std::size_t> offsets;
   std::vector<Cell_index> cells;
   tr.leaves_around_vertices(offsets, cells);
-  const std::size_t n = tr.number_of_vertices();
   // The row of vertex u: its neighbours and the summed weights (in double precision).
   auto build_row = [&](std::size_t u, std::vector<int>& neighbors, std::vector<double>& row) {
     neighbors.clear();
@@ -64,15 +96,17 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
     for(std::size_t i = offsets[u]; i < offsets[u + 1]; ++i)
     {
       const Cell_index c = cells[i];
-      const bool empty = count(c) == 0;
+      const unsigned char bits = code[c];
+      const bool empty = (bits & empty_bit) != 0;
       const double w = empty ? w_empty : weight(c);
-      const int su = empty ? 1 : fits[c].side(xyz[u]);
+      int lu = 0;
+      while(std::size_t(tr.vertex(c, lu)) != u) ++lu;
       for(int l = 0; l < 4; ++l)
       {
+        if(l == lu) continue;
         const int v = tr.vertex(c, l);
-        if(std::size_t(v) == u) continue;
-        const int sv = empty ? 1 : fits[c].side(xyz[v]);
-        const double h = -double(su * sv) * w;
+        // S_u S_v = -1 exactly when the two sides differ
+        const double h = (((bits >> l) ^ (bits >> lu)) & 1) ? w : -w;
         std::size_t j = 0;
         while(j < neighbors.size() && neighbors[j] != v) ++j;
         if(j == neighbors.size()) { neighbors.push_back(v); row.push_back(h); }
@@ -80,45 +114,54 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
       }
     }
   };
-  // Two passes over chunks of vertices (in parallel with TBB): the degrees, then the rows
-  // written in place. Building the rows twice costs less than holding the graph twice
-  // (per-chunk parts concatenated), which was the peak of memory of the whole method.
-  // Each row depends only on its vertex: the graph is the same for any number of threads.
-  const std::size_t chunk = 4096, number_of_chunks = (n + chunk - 1) / chunk;
+  // The rows are built once, per chunk of vertices (in parallel with TBB), and
+  // concatenated once the leaf incidences are freed: the peak (the rows twice) is then no
+  // higher than that of the annealing, which also holds the graph twice. Each row depends
+  // only on its vertex: the graph is the same for any number of threads.
+  struct Rows
+  {
+    std::vector<std::size_t> degrees;
+    std::vector<int> adjacency;
+    std::vector<float> weights;
+  };
+  std::vector<Rows> parts((n + chunk - 1) / chunk);
+  for_each_chunk(n, [&](std::size_t b, std::size_t e) {
+    Rows& part = parts[b / chunk];
+    std::vector<int> neighbors;
+    std::vector<double> row;
+    for(std::size_t u = b; u < e; ++u)
+    {
+      build_row(u, neighbors, row);
+      part.degrees.push_back(neighbors.size());
+      part.adjacency.insert(part.adjacency.end(), neighbors.begin(), neighbors.end());
+      for(double h : row) part.weights.push_back(float(h));
+    }
+    // exact sizes: the slack of the growth would add up to the size of the graph
+    part.adjacency.shrink_to_fit();
+    part.weights.shrink_to_fit();
+  });
+  std::vector<std::size_t>().swap(offsets);
+  std::vector<Cell_index>().swap(cells);
+  std::vector<unsigned char>().swap(code);
   Coupling_graph g;
   g.offsets.assign(n + 1, 0);
-  auto for_each_chunk = [&](const auto& f) {
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::parallel_for(std::size_t(0), number_of_chunks, [&](std::size_t k) { f(k * chunk, (std::min)(n, (k + 1) * chunk)); });
-#else
-    for(std::size_t k = 0; k < number_of_chunks; ++k) f(k * chunk, (std::min)(n, (k + 1) * chunk));
+  std::size_t total = 0;
+  for(const Rows& part : parts) total += part.adjacency.size();
+  g.adjacency.reserve(total);
+  g.weights.reserve(total);
+  std::size_t u = 0;
+  for(Rows& part : parts)
+  {
+    for(std::size_t d : part.degrees) { g.offsets[u + 1] = g.offsets[u] + d; ++u; }
+    g.adjacency.insert(g.adjacency.end(), part.adjacency.begin(), part.adjacency.end());
+    g.weights.insert(g.weights.end(), part.weights.begin(), part.weights.end());
+    part = Rows();
+  }
+#if defined(__GLIBC__)
+  // the parts (small blocks, from the heap) are freed but kept by glibc, under the large
+  // arrays the annealing allocates next: returned, they do not add to its peak
+  malloc_trim(0);
 #endif
-  };
-  for_each_chunk([&](std::size_t b, std::size_t e) {
-    std::vector<int> neighbors;
-    std::vector<double> row;
-    for(std::size_t u = b; u < e; ++u)
-    {
-      build_row(u, neighbors, row);
-      g.offsets[u + 1] = neighbors.size();
-    }
-  });
-  for(std::size_t u = 0; u < n; ++u) g.offsets[u + 1] += g.offsets[u];
-  g.adjacency.resize(g.offsets[n]);
-  g.weights.resize(g.offsets[n]);
-  for_each_chunk([&](std::size_t b, std::size_t e) {
-    std::vector<int> neighbors;
-    std::vector<double> row;
-    for(std::size_t u = b; u < e; ++u)
-    {
-      build_row(u, neighbors, row);
-      for(std::size_t j = 0; j < neighbors.size(); ++j)
-      {
-        g.adjacency[g.offsets[u] + j] = neighbors[j];
-        g.weights[g.offsets[u] + j] = float(row[j]);
-      }
-    }
-  });
   return g;
 }
 
