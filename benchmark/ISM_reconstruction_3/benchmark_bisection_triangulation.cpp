@@ -1,9 +1,12 @@
 // Throughput and memory of Bisection_triangulation_3: leaf bisections per second and
 // bytes per leaf, for uniform refinement to ~1.6 M / 3.1 M leaves and for adaptive
 // refinement around 100k points on a sphere. Run a Release build on an idle machine.
+// Like ism_reconstruct, it restarts itself once with glibc's large blocks on transparent
+// huge pages (internal/huge_pages.h; ISM_NO_HUGE_PAGES=1 for normal pages).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bisection_triangulation_3.h>
+#include <CGAL/ISM_reconstruction_3/internal/huge_pages.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Timer.h>
@@ -18,6 +21,7 @@ typedef K::Point_3 P;
 
 int main(int argc, char** argv)
 {
+  CGAL::ISM_reconstruction_3::internal::restart_with_huge_pages(argv);
   const int uniform_level = argc > 1 ? std::atoi(argv[1]) : 18;
   std::cout << "| case | leaves | bisections | time (s) | bisections/s | bytes/leaf |\n|---|---|---|---|---|---|\n";
   for(int level : {uniform_level, uniform_level + 1})
