@@ -19,7 +19,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -66,8 +65,8 @@ int main(int argc, char** argv)
     const FT radius = std::sqrt(bsphere.squared_radius());
     const FT sm_sphere_radius = 5.0 * radius;
     const FT sm_dichotomy_error = sm_distance * average_spacing / 1000.0;  // << sm_distance
-    // The function owns its triangulation and is not copyable: the surface refers to it.
-    Surface_3 surface(std::cref(function), Sphere(inner_point, sm_sphere_radius * sm_sphere_radius),
+    // The surface holds a copy of the function (copies share the triangulation).
+    Surface_3 surface(function, Sphere(inner_point, sm_sphere_radius * sm_sphere_radius),
                       sm_dichotomy_error / sm_sphere_radius);
 
     CGAL::Surface_mesh_default_criteria_3<STr> criteria(sm_angle, sm_radius * average_spacing,

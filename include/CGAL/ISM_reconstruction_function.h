@@ -48,6 +48,10 @@ outside, defined in the whole box.
 \cgalModels `ImplicitFunction` (as `Poisson_reconstruction_function`): it can be meshed by
 CGAL's surface mesher or Mesh_3 through `bounding_sphere()` and `get_inner_point()`.
 
+Copies are cheap and share the triangulation, as copies of `Poisson_reconstruction_function`
+do: it is never modified once computed, and a new call of `compute_implicit_function()`
+builds a new one, so the copies made before keep their function.
+
 \tparam GeomTraits a model of `ISMReconstructionTraits_3`; every \cgal `Kernel` is one.
 
 \sa `ism_surface_reconstruction()`, which builds one and meshes it by marching tetrahedra
@@ -99,7 +103,10 @@ private:
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
   Settings m_settings;
-  std::unique_ptr<Triangulation> m_tr;
+  // shared by copies, as in Poisson_reconstruction_function, so that the function can be
+  // passed by value (CGAL's Implicit_surface_3 stores a copy); never modified after
+  // compute_implicit_function(), which builds a new one
+  std::shared_ptr<Triangulation> m_tr;
   std::vector<signed char> m_sign;
   std::vector<double> m_value;
   std::vector<Xyz> m_vertex_xyz;  // double copy of the triangulation's points

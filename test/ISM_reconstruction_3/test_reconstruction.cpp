@@ -121,6 +121,23 @@ int main(int argc, char** argv)
     for(const Point_3& p : pts)
       held = held && CGAL::squared_distance(p, f.bounding_sphere().center()) <= f.bounding_sphere().squared_radius();
     CHECK(held, "bounding_sphere() holds the points");
+
+    // copies share the computed function; a new computation of the original leaves them
+    // unchanged (CGAL's Implicit_surface_3 holds a copy)
+    std::vector<Point_3> probes;
+    for(int i = 0; i < 200; ++i) probes.push_back(pts[std::size_t(i) * (pts.size() / 200)] + K::Vector_3(0.01 * (i % 7), 0, -0.01 * (i % 5)));
+    std::vector<double> before;
+    for(const Point_3& p : probes) before.push_back(CGAL::to_double(f(p)));
+    CGAL::ISM_reconstruction_function<K> g(f), h(pts);
+    h = f;
+    bool same = g.statistics().number_of_leaves == f.statistics().number_of_leaves;
+    for(std::size_t i = 0; i < probes.size(); ++i) same = same && g(probes[i]) == before[i] && h(probes[i]) == before[i];
+    CHECK(same, "a copy evaluates as the original");
+    f.compute_implicit_function(CGAL::parameters::maximum_depth(12));
+    bool changed = f.statistics().number_of_leaves != g.statistics().number_of_leaves, kept = true;
+    for(std::size_t i = 0; i < probes.size(); ++i) kept = kept && g(probes[i]) == before[i] && h(probes[i]) == before[i];
+    CHECK(changed, "a new computation with another depth changes the original");
+    CHECK(kept, "copies keep their function when the original is computed again");
   }
 
   // --- bad input: clear exceptions (the robustness test covers many more cases)

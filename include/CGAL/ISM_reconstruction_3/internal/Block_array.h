@@ -8,8 +8,10 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_BLOCK_ARRAY_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_BLOCK_ARRAY_H
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -28,6 +30,25 @@ class Block_array
   std::size_t m_size = 0;
 
 public:
+  Block_array() = default;
+  Block_array(Block_array&&) = default;
+  Block_array& operator=(Block_array&&) = default;
+  // a deep copy, block by block (the blocks hold the elements, not pointers to them)
+  Block_array(const Block_array& other) : m_size(other.m_size)
+  {
+    m_blocks.reserve(other.m_blocks.size());
+    for(const auto& b : other.m_blocks)
+    {
+      m_blocks.emplace_back(new T[block_size]);
+      std::copy(b.get(), b.get() + block_size, m_blocks.back().get());
+    }
+  }
+  Block_array& operator=(const Block_array& other)
+  {
+    if(this != &other) { Block_array copy(other); *this = std::move(copy); }
+    return *this;
+  }
+
   std::size_t size() const { return m_size; }
   bool empty() const { return m_size == 0; }
   std::size_t capacity() const { return m_blocks.size() * block_size; }
