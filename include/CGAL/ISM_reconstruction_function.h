@@ -291,6 +291,7 @@ private:
     m_bounding_sphere = Sphere(Point(box.data_center[0], box.data_center[1], box.data_center[2]),
                                FT(box.data_radius * box.data_radius * 1.1025));
     Triangulation& tr = *m_tr;
+    m_vertex_xyz.clear();  // those of a previous computation belong to its triangulation
     sync_vertices();
     m_sign.assign(tr.number_of_vertices(), 1);
 

@@ -138,6 +138,13 @@ int main(int argc, char** argv)
     for(std::size_t i = 0; i < probes.size(); ++i) kept = kept && g(probes[i]) == before[i] && h(probes[i]) == before[i];
     CHECK(changed, "a new computation with another depth changes the original");
     CHECK(kept, "copies keep their function when the original is computed again");
+    // a second computation gives what a fresh object gives (it once reused the vertex
+    // positions of the first triangulation)
+    CGAL::ISM_reconstruction_function<K> fresh(pts);
+    fresh.compute_implicit_function(CGAL::parameters::maximum_depth(12));
+    bool as_fresh = fresh.statistics().number_of_leaves == f.statistics().number_of_leaves;
+    for(const Point_3& p : probes) as_fresh = as_fresh && fresh(p) == f(p);
+    CHECK(as_fresh, "computing again gives the function of a fresh object");
   }
 
   // --- bad input: clear exceptions (the robustness test covers many more cases)
