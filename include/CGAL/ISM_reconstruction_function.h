@@ -173,6 +173,7 @@ public:
     settings.check();
     m_settings = settings;
     m_stats = Statistics{};
+    m_value.clear();  // operator() is then +1 until this computation completes
     m_stats.number_of_points = m_points.size();
     CGAL::Real_timer timer;
     timer.start();
@@ -227,11 +228,13 @@ public:
   /// \name Evaluation
   /// @{
 
-  /// F(p) by linear interpolation in the leaf holding `p`; outside the box, a positive value.
+  /// F(p) by linear interpolation in the leaf holding `p`; outside the box, a positive value;
+  /// `+1` everywhere before `compute_implicit_function()` completed.
   FT operator()(const Point& p) const
   {
     const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
-    if(!m_tr) return FT(1);
+    // no function yet, or its computation was cancelled or threw: outside everywhere
+    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
     const Cell_index r = m_tr->locate_root(p);
     if(r < 0)
     {

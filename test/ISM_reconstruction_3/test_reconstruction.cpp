@@ -145,6 +145,10 @@ int main(int argc, char** argv)
     bool as_fresh = fresh.statistics().number_of_leaves == f.statistics().number_of_leaves;
     for(const Point_3& p : probes) as_fresh = as_fresh && fresh(p) == f(p);
     CHECK(as_fresh, "computing again gives the function of a fresh object");
+    // a cancelled computation leaves no half-made function behind (+1 everywhere)
+    const bool completed =
+        f.compute_implicit_function(CGAL::parameters::callback(std::function<bool(double)>([](double) { return false; })));
+    CHECK(!completed && f(fresh.get_inner_point()) == 1 && f(probes[0]) == 1, "cancelled: +1 everywhere");
   }
 
   // --- bad input: clear exceptions (the robustness test covers many more cases)
