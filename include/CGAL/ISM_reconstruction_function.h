@@ -30,10 +30,6 @@
 #include <string>
 #include <vector>
 
-#if defined(__GLIBC__)
-#include <malloc.h>  // malloc_trim
-#endif
-
 namespace CGAL {
 
 /*!
@@ -201,12 +197,9 @@ public:
     // lowers the peak, reached later while the surface is extracted (32 bytes per cell)
     m_range = decltype(m_range)();
     m_fit = decltype(m_fit)();
-#if defined(__GLIBC__)
-    // their blocks (under 1 MB each) come from the heap, between blocks still in use, and
-    // glibc keeps them: without this, freeing 64 MB lowered the resident memory by 2 MB
-    // and the surface extraction set a new peak above the topology's (dragon: 228 -> 212 MB)
-    malloc_trim(0);
-#endif
+    // without this, freeing these 64 MB lowered the resident memory by 2 MB and the surface
+    // extraction set a new peak above the topology's (dragon: 228 -> 212 MB)
+    ISM_reconstruction_3::internal::return_free_heap_memory();
     if(!report(0.9)) return false;
 
     timer.reset();

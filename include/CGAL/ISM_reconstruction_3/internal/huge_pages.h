@@ -10,7 +10,7 @@
 
 // For programs (the tool, the benchmark), not for the library: the method touches a few
 // hundred MB of fresh memory on large inputs, and with 4 kB pages the page faults alone
-// took 1 s of the 5.8 s of the 437,645-point dragon on the 2-core VM of the CI (126k faults);
+// took 1 s of the 5.8 s of the 437,645-point dragon on the 2-core development VM (126k faults);
 // with glibc backing its large blocks by transparent huge pages (glibc >= 2.35, tunable
 // glibc.malloc.hugetlb=1) the run took 4.4 s (41k faults; peak memory +3 %). glibc reads
 // tunables only at start-up, so the program restarts itself once with the tunable set.
@@ -18,7 +18,6 @@
 
 #if defined(__linux__) && defined(__GLIBC__)
 #include <cstdlib>
-#include <cstring>
 #include <string>
 #include <unistd.h>
 #endif

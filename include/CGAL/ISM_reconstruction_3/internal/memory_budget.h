@@ -28,6 +28,10 @@
 #include <unistd.h>
 #endif
 
+#if defined(__GLIBC__)
+#include <malloc.h>  // malloc_trim
+#endif
+
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 namespace internal {
@@ -265,6 +269,17 @@ private:
   int m_depth;
   std::size_t m_next_check = std::size_t(1) << 15;  // 5 MiB of cells: below, fixed_bytes covers them
 };
+
+// Returns to the system the heap memory glibc keeps after a free: blocks under the mmap
+// threshold (the per-cell blocks, the per-chunk graph rows) lie between blocks still in
+// use, and stay resident under the next large arrays, which then set a higher peak.
+// Nothing to do elsewhere.
+inline void return_free_heap_memory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 
 } // namespace internal
 } // namespace ISM_reconstruction_3

@@ -10,6 +10,7 @@
 
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
+#include <CGAL/ISM_reconstruction_3/internal/memory_budget.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -18,10 +19,6 @@
 #include <algorithm>
 #include <array>
 #include <vector>
-
-#if defined(__GLIBC__)
-#include <malloc.h>  // malloc_trim
-#endif
 
 namespace CGAL {
 namespace ISM_reconstruction_3 {
@@ -69,9 +66,9 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
 #endif
   };
   // The sides of its 4 vertices (bit l set: vertex l on the negative side) and
-  // emptiness (bit 4) of every leaf, computed once: each leaf is met from each of its
-  // vertices, twice, and reading the plane and the 4 vertex positions there at random was
-  // half the time of the whole topology step (dragon, 437k points). One byte per cell.
+  // emptiness (bit 4) of every leaf, computed once in cell order: each leaf is met from
+  // each of its 4 vertices, which would otherwise read its plane, its point count and the
+  // vertex positions again at random. One byte per cell.
   enum { empty_bit = 16 };
   std::vector<unsigned char> code(number_of_cells, 0);
   for_each_chunk(number_of_cells, [&](std::size_t b, std::size_t e) {
@@ -157,11 +154,8 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
     g.weights.insert(g.weights.end(), part.weights.begin(), part.weights.end());
     part = Rows();
   }
-#if defined(__GLIBC__)
-  // the parts (small blocks, from the heap) are freed but kept by glibc, under the large
-  // arrays the annealing allocates next: returned, they do not add to its peak
-  malloc_trim(0);
-#endif
+  // the parts are small heap blocks: returned, they do not add to the annealing's peak
+  return_free_heap_memory();
   return g;
 }
 
