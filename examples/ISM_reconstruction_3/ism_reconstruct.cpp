@@ -264,6 +264,10 @@ const std::vector<Option>& options()
     ISM_REAL_OPTION("--minimum-island-fraction", minimum_island_fraction,
                     "inside (or enclosed outside) clusters of fewer vertices than this fraction of the "
                     "largest inside cluster are flipped; 0: keep all"),
+    ISM_REAL_OPTION("--thin-handle-depth", thin_handle_depth,
+                    "a handle held open only by vertices nearer to the surface than this many times the "
+                    "median size of the leaves it crosses is removed (tunnel filled, else bridge cut); "
+                    "0: keep all"),
     ISM_INTEGER_OPTION("--memory-limit", memory_limit,
                        "bytes the reconstruction may use on top of the input; 0: what the machine allows "
                        "(physical memory, ulimit -v and -d, cgroup limit). Beyond it the run stops with an "

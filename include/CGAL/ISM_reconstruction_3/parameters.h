@@ -53,6 +53,7 @@ enum distance_estimate_t { distance_estimate };
 enum box_margin_t { box_margin };
 enum paper_settings_t { paper_settings };
 enum minimum_island_fraction_t { minimum_island_fraction };
+enum thin_handle_depth_t { thin_handle_depth };
 enum memory_limit_t { memory_limit };
 
 } // namespace internal_np
@@ -92,6 +93,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(distance_estimate)
 CGAL_ISM_ADD_NAMED_PARAMETER(box_margin)
 CGAL_ISM_ADD_NAMED_PARAMETER(paper_settings)
 CGAL_ISM_ADD_NAMED_PARAMETER(minimum_island_fraction)
+CGAL_ISM_ADD_NAMED_PARAMETER(thin_handle_depth)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 /// \endcond
 

@@ -55,6 +55,9 @@ struct Settings
       memory, `ulimit -v` and `-d`, cgroup limits). A larger value does not raise those limits. */
   std::size_t memory_limit = 0;
   double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all
+  /*! a handle of the surface that only vertices nearer to it than this many times the median size of the leaves
+      it crosses hold open is removed (a tunnel filled, else a bridge cut); 0: keep all handles */
+  double thin_handle_depth = 0.15;
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
   /// The settings of the paper (section 4): squared nearest-point distance, no clamping
@@ -69,6 +72,7 @@ struct Settings
     s.min_points_per_cell = 8;
     s.coplanarity_threshold = 1e-3;
     s.minimum_island_fraction = 0;
+    s.thin_handle_depth = 0;
     s.smoothing_iterations = 3;
     return s;
   }
@@ -112,6 +116,7 @@ struct Settings
     if(!(box_margin > 0 && box_margin <= 10)) fail("box_margin", str(box_margin), "(0, 10]");
     if(!(minimum_island_fraction >= 0 && minimum_island_fraction < 1))
       fail("minimum_island_fraction", str(minimum_island_fraction), "[0, 1)");
+    if(!(thin_handle_depth >= 0 && thin_handle_depth <= 10)) fail("thin_handle_depth", str(thin_handle_depth), "[0, 10]");
   }
 };
 
@@ -142,6 +147,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.distance_estimate = choose_parameter(get_parameter(np, inp::distance_estimate), d.distance_estimate);
   s.box_margin = choose_parameter(get_parameter(np, inp::box_margin), d.box_margin);
   s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
+  s.thin_handle_depth = choose_parameter(get_parameter(np, inp::thin_handle_depth), d.thin_handle_depth);
   s.memory_limit = choose_parameter(get_parameter(np, inp::memory_limit), d.memory_limit);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;

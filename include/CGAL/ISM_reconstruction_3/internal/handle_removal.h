@@ -1,0 +1,233 @@
+// Copyright (c) 2026 ISM_reconstruction_3 developers.
+// This file is part of CGAL (www.cgal.org).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : ISM_reconstruction_3 developers
+
+#ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_HANDLE_REMOVAL_H
+#define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_HANDLE_REMOVAL_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace ISM_reconstruction_3 {
+namespace internal {
+
+// Union-find with path halving, for sets that only grow.
+class Disjoint_sets
+{
+public:
+  explicit Disjoint_sets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::uint32_t(0)); }
+  std::uint32_t find(std::uint32_t x)
+  {
+    while(m_parent[x] != x) x = m_parent[x] = m_parent[m_parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) { m_parent[find(a)] = find(b); }
+  void reset(std::size_t n)
+  {
+    m_parent.resize(n);
+    std::iota(m_parent.begin(), m_parent.end(), std::uint32_t(0));
+  }
+
+private:
+  std::vector<std::uint32_t> m_parent;
+};
+
+// The leaves around the vertices v with `wanted[v]`, as compressed rows: those of v are
+// leaves[offsets[v]] .. leaves[offsets[v + 1] - 1] (none for the others).
+template <class Triangulation>
+void leaves_around_vertices(const Triangulation& tr, const std::vector<char>& wanted,
+                            std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& leaves)
+{
+  typedef typename Triangulation::Cell_index Cell_index;
+  const std::size_t n = tr.number_of_vertices();
+  offsets.assign(n + 1, 0);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+      for(int i = 0; i < 4; ++i)
+        if(wanted[tr.vertex(c, i)]) ++offsets[tr.vertex(c, i) + 1];
+  for(std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+  leaves.resize(offsets[n]);
+  std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+      for(int i = 0; i < 4; ++i)
+        if(wanted[tr.vertex(c, i)]) leaves[fill[tr.vertex(c, i)]++] = std::uint32_t(c);
+}
+
+// Whether adding v to the set X (`in_set`, its components in `sets`) closes a loop: v's
+// link meets X in more pieces (connected by link edges) than X has components there.
+template <class Triangulation>
+bool closes_loop(const Triangulation& tr, const std::vector<std::uint32_t>& offsets,
+                 const std::vector<std::uint32_t>& leaves, const std::vector<char>& in_set, Disjoint_sets& sets,
+                 std::uint32_t v, std::vector<std::uint32_t>& link, Disjoint_sets& pieces_of_link,
+                 std::vector<std::uint32_t>& roots)
+{
+  link.clear();
+  for(std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
+    for(int l = 0; l < 4; ++l)
+    {
+      const std::uint32_t w = std::uint32_t(tr.vertex(leaves[i], l));
+      if(w != v && in_set[w] && std::find(link.begin(), link.end(), w) == link.end()) link.push_back(w);
+    }
+  if(link.size() < 2) return false;
+  auto index = [&](std::uint32_t w) { return std::uint32_t(std::find(link.begin(), link.end(), w) - link.begin()); };
+  pieces_of_link.reset(link.size());
+  // the link's edges: the pairs of other vertices of a leaf around v
+  for(std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
+  {
+    std::uint32_t other[3];
+    int k = 0;
+    for(int l = 0; l < 4; ++l)
+    {
+      const std::uint32_t w = std::uint32_t(tr.vertex(leaves[i], l));
+      if(w != v) other[k++] = w;
+    }
+    for(int a = 0; a < 3; ++a)
+      for(int b = a + 1; b < 3; ++b)
+        if(in_set[other[a]] && in_set[other[b]]) pieces_of_link.unite(index(other[a]), index(other[b]));
+  }
+  std::size_t pieces = 0;
+  roots.clear();
+  for(std::uint32_t j = 0; j < link.size(); ++j)
+  {
+    if(pieces_of_link.find(j) == j) ++pieces;
+    roots.push_back(sets.find(link[j]));
+  }
+  std::sort(roots.begin(), roots.end());
+  return pieces > std::size_t(std::unique(roots.begin(), roots.end()) - roots.begin());
+}
+
+// Why: marching tetrahedra separates the inside vertices from the outside ones along the
+// leaves, so the surface has exactly one handle per independent loop of the set of inside
+// vertices (and as many loops in the outside set). Where a part of the surface is about
+// one leaf thick (the ears of the bunny) or noisy, the signs can close such a loop only
+// through vertices lying on the surface: a hole through a thin plate, a bridge of noise.
+// Even the true in/out signs, sampled at the leaf vertices, make such handles (measured).
+//
+// One sweep over the vertices of one side (`side`: -1 inside, +1 outside), deepest first
+// (largest |value|), grows the set X of that side. The vertices of the box boundary and
+// those at least `depth` from the surface (`deep`) are in X from the start, their
+// components already in `sets`: the sweep only visits the others. Adding v closes a loop
+// in X (`closes_loop()`); such a v changes side instead of joining X. Loops through deeper
+// vertices (the hole of a torus, the tube of a knot) are kept.
+template <class Triangulation>
+void open_shallow_loops(const Triangulation& tr, const std::vector<std::uint32_t>& offsets,
+                        const std::vector<std::uint32_t>& leaves, const std::vector<char>& deep, signed char side,
+                        Disjoint_sets& sets, std::vector<signed char>& signs, std::vector<double>& values)
+{
+  const std::size_t n = signs.size();
+  std::vector<std::uint32_t> order;
+  std::vector<char> in_set(n, 0);
+  for(std::size_t v = 0; v < n; ++v)
+    if(signs[v] == side)
+    {
+      if(deep[v]) in_set[v] = 1;
+      else order.push_back(std::uint32_t(v));
+    }
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const double da = std::abs(values[a]), db = std::abs(values[b]);
+    return da != db ? da > db : a < b;  // ties by index: deterministic
+  });
+  std::vector<std::uint32_t> link;   // the vertices of v's link in X
+  Disjoint_sets pieces_of_link(0);   // over the indices into `link`
+  std::vector<std::uint32_t> roots;
+  for(std::uint32_t v : order)
+  {
+    if(closes_loop(tr, offsets, leaves, in_set, sets, v, link, pieces_of_link, roots))
+    {
+      signs[v] = static_cast<signed char>(-side);
+      values[v] = -values[v];
+      continue;
+    }
+    in_set[v] = 1;
+    for(std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
+      for(int l = 0; l < 4; ++l)
+      {
+        const std::uint32_t w = std::uint32_t(tr.vertex(leaves[i], l));
+        if(in_set[w]) sets.unite(w, v);
+      }
+  }
+}
+
+// The median longest edge of the leaves with vertices of both signs: the size of the
+// leaves the surface crosses, the scale of its detail (it grows with the noise).
+template <class Triangulation>
+double median_surface_leaf_size(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
+                                const std::vector<signed char>& signs)
+{
+  typedef typename Triangulation::Cell_index Cell_index;
+  std::vector<double> sizes;
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+    {
+      const auto& v = tr.vertices(c);
+      if(signs[v[0]] == signs[v[1]] && signs[v[0]] == signs[v[2]] && signs[v[0]] == signs[v[3]]) continue;
+      double longest = 0;
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
+        {
+          double l2 = 0;
+          for(int d = 0; d < 3; ++d) l2 += (xyz[v[i]][d] - xyz[v[j]][d]) * (xyz[v[i]][d] - xyz[v[j]][d]);
+          longest = (std::max)(longest, l2);
+        }
+      sizes.push_back(std::sqrt(longest));
+    }
+  if(sizes.empty()) return 0;
+  std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  return sizes[sizes.size() / 2];
+}
+
+// Removes the handles of the surface that only vertices nearer to the surface than
+// `relative_depth` times the median size of the leaves it crosses hold open: first the
+// outside sweep (a tunnel through a thin plate is filled), then the inside sweep (a thin
+// bridge is cut). Returns the number of vertices that changed side.
+template <class Triangulation>
+std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
+                                const std::vector<char>& boundary, double relative_depth,
+                                std::vector<signed char>& signs, std::vector<double>& values)
+{
+  const double depth = relative_depth * median_surface_leaf_size(tr, xyz, signs);
+  if(!(depth > 0)) return 0;
+  typedef typename Triangulation::Cell_index Cell_index;
+  const std::size_t n = signs.size();
+  std::vector<char> deep(n), shallow(n);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    deep[v] = boundary[v] || !(std::abs(values[v]) < depth);
+    shallow[v] = !deep[v];
+  }
+  std::vector<std::uint32_t> offsets, leaves;
+  leaves_around_vertices(tr, shallow, offsets, leaves);
+  // the components of the deep vertices of each side, one pass over the leaves (in order
+  // in memory, unlike vertex by vertex)
+  Disjoint_sets sets(n);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
+        {
+          const std::uint32_t a = std::uint32_t(tr.vertex(c, i)), b = std::uint32_t(tr.vertex(c, j));
+          if(deep[a] && deep[b] && signs[a] == signs[b]) sets.unite(a, b);
+        }
+  const std::vector<signed char> before = signs;
+  open_shallow_loops(tr, offsets, leaves, deep, 1, sets, signs, values);
+  // the outside sweep only moved shallow vertices: the deep ones inside keep their components
+  open_shallow_loops(tr, offsets, leaves, deep, -1, sets, signs, values);
+  std::size_t changed = 0;
+  for(std::size_t v = 0; v < n; ++v) changed += signs[v] != before[v];
+  return changed;
+}
+
+} // namespace internal
+} // namespace ISM_reconstruction_3
+} // namespace CGAL
+
+#endif // CGAL_ISM_RECONSTRUCTION_3_INTERNAL_HANDLE_REMOVAL_H
