@@ -193,9 +193,11 @@ public:
     final_schedule.final_temperature =
         final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
     estimate_topology(final_schedule);
+    // the triangulation is final: its box boundary serves the islands and the handles
+    const std::vector<char> boundary = ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr);
     if(m_settings.minimum_island_fraction > 0)
-      m_stats.number_of_flipped_islands = ISM_reconstruction_3::internal::remove_islands(
-          *m_tr, m_sign, ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr), m_settings.minimum_island_fraction);
+      m_stats.number_of_flipped_islands =
+          ISM_reconstruction_3::internal::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     m_stats.topology_time += timer.time();
     // the per-cell point ranges and fits only serve refinement and topology: freeing them
@@ -210,15 +212,11 @@ public:
     timer.reset();
     std::vector<char> near_surface(m_sign.size(), 0);
     for(Cell_index c = 0; c < Cell_index(m_tr->number_of_cells()); ++c)
-      if(m_tr->is_leaf(c))
-      {
-        const auto& v = m_tr->vertices(c);
-        if(m_sign[v[0]] != m_sign[v[1]] || m_sign[v[0]] != m_sign[v[2]] || m_sign[v[0]] != m_sign[v[3]])
-          for(int l = 0; l < 4; ++l) near_surface[v[l]] = 1;
-      }
+      if(m_tr->is_leaf(c) && ISM_reconstruction_3::internal::is_crossed(m_tr->vertices(c), m_sign))
+        for(int l = 0; l < 4; ++l) near_surface[m_tr->vertex(c, l)] = 1;
     m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, m_vertex_xyz, m_sign,
                                                                   m_settings.distance_estimate, near_surface);
-    if(m_settings.thin_handle_depth > 0) remove_thin_handles();
+    if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary);
     m_stats.distance_time = timer.time();
     find_inner_point();
     return report(1.);
@@ -474,20 +472,17 @@ private:
   }
 
   // after the distances: the depth of a vertex decides whether the loop it closes is thin
-  void remove_thin_handles()
+  void remove_thin_handles(const std::vector<char>& boundary)
   {
     namespace I = ISM_reconstruction_3::internal;
-    const std::vector<char> boundary = I::box_boundary_vertices(*m_tr);
     m_stats.number_of_handle_vertices =
         I::remove_thin_handles(*m_tr, m_vertex_xyz, boundary, m_settings.thin_handle_depth, m_sign, m_value);
     if(m_stats.number_of_handle_vertices > 0 && m_settings.minimum_island_fraction > 0)
     {
       // vertices that changed side can leave a speck of one sign (bunny with 0.5 % noise,
       // homer: a second component); taking a small ball out of a region leaves its loops
-      const std::vector<signed char> before = m_sign;
       m_stats.number_of_flipped_islands += I::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
-      for(std::size_t v = 0; v < m_sign.size(); ++v)
-        if(m_sign[v] != before[v]) m_value[v] = -m_value[v];
+      for(std::size_t v = 0; v < m_sign.size(); ++v) m_value[v] = m_sign[v] * std::abs(m_value[v]);
     }
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
   }

@@ -40,10 +40,17 @@ private:
   std::vector<std::uint32_t> m_parent;
 };
 
-// The leaves around the vertices v with `wanted[v]`, as compressed rows: those of v are
+// Whether the surface crosses a leaf: its vertices (`vertices`) carry both signs.
+template <class Vertices>
+bool is_crossed(const Vertices& v, const std::vector<signed char>& signs)
+{
+  return signs[v[0]] != signs[v[1]] || signs[v[0]] != signs[v[2]] || signs[v[0]] != signs[v[3]];
+}
+
+// The leaves around the vertices v without `skip[v]`, as compressed rows: those of v are
 // leaves[offsets[v]] .. leaves[offsets[v + 1] - 1] (none for the others).
 template <class Triangulation>
-void leaves_around_vertices(const Triangulation& tr, const std::vector<char>& wanted,
+void leaves_around_vertices(const Triangulation& tr, const std::vector<char>& skip,
                             std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& leaves)
 {
   typedef typename Triangulation::Cell_index Cell_index;
@@ -52,14 +59,14 @@ void leaves_around_vertices(const Triangulation& tr, const std::vector<char>& wa
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
     if(tr.is_leaf(c))
       for(int i = 0; i < 4; ++i)
-        if(wanted[tr.vertex(c, i)]) ++offsets[tr.vertex(c, i) + 1];
+        if(!skip[tr.vertex(c, i)]) ++offsets[tr.vertex(c, i) + 1];
   for(std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
   leaves.resize(offsets[n]);
   std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
     if(tr.is_leaf(c))
       for(int i = 0; i < 4; ++i)
-        if(wanted[tr.vertex(c, i)]) leaves[fill[tr.vertex(c, i)]++] = std::uint32_t(c);
+        if(!skip[tr.vertex(c, i)]) leaves[fill[tr.vertex(c, i)]++] = std::uint32_t(c);
 }
 
 // Whether adding v to the set X (`in_set`, its components in `sets`) closes a loop: v's
@@ -166,10 +173,9 @@ double median_surface_leaf_size(const Triangulation& tr, const std::vector<std::
   typedef typename Triangulation::Cell_index Cell_index;
   std::vector<double> sizes;
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
-    if(tr.is_leaf(c))
+    if(tr.is_leaf(c) && is_crossed(tr.vertices(c), signs))
     {
       const auto& v = tr.vertices(c);
-      if(signs[v[0]] == signs[v[1]] && signs[v[0]] == signs[v[2]] && signs[v[0]] == signs[v[3]]) continue;
       double longest = 0;
       for(int i = 0; i < 4; ++i)
         for(int j = i + 1; j < 4; ++j)
@@ -198,14 +204,10 @@ std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::
   if(!(depth > 0)) return 0;
   typedef typename Triangulation::Cell_index Cell_index;
   const std::size_t n = signs.size();
-  std::vector<char> deep(n), shallow(n);
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    deep[v] = boundary[v] || !(std::abs(values[v]) < depth);
-    shallow[v] = !deep[v];
-  }
-  std::vector<std::uint32_t> offsets, leaves;
-  leaves_around_vertices(tr, shallow, offsets, leaves);
+  std::vector<char> deep(n);
+  for(std::size_t v = 0; v < n; ++v) deep[v] = boundary[v] || !(std::abs(values[v]) < depth);
+  std::vector<std::uint32_t> offsets, leaves;  // only the shallow vertices are visited
+  leaves_around_vertices(tr, deep, offsets, leaves);
   // the components of the deep vertices of each side, one pass over the leaves (in order
   // in memory, unlike vertex by vertex)
   Disjoint_sets sets(n);
