@@ -8,6 +8,8 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_HANDLE_REMOVAL_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_HANDLE_REMOVAL_H
 
+#include <CGAL/ISM_reconstruction_3/internal/disjoint_sets.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,27 +20,6 @@
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 namespace internal {
-
-// Union-find with path halving, for sets that only grow.
-class Disjoint_sets
-{
-public:
-  explicit Disjoint_sets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::uint32_t(0)); }
-  std::uint32_t find(std::uint32_t x)
-  {
-    while(m_parent[x] != x) x = m_parent[x] = m_parent[m_parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { m_parent[find(a)] = find(b); }
-  void reset(std::size_t n)
-  {
-    m_parent.resize(n);
-    std::iota(m_parent.begin(), m_parent.end(), std::uint32_t(0));
-  }
-
-private:
-  std::vector<std::uint32_t> m_parent;
-};
 
 // Whether the surface crosses a leaf: its vertices (`vertices`) carry both signs.
 template <class Vertices>

@@ -8,6 +8,7 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TOPOLOGY_ESTIMATION_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TOPOLOGY_ESTIMATION_H
 
+#include <CGAL/ISM_reconstruction_3/internal/disjoint_sets.h>
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 #include <CGAL/ISM_reconstruction_3/internal/memory_budget.h>
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -183,59 +185,43 @@ template <class Triangulation>
 std::size_t remove_islands(const Triangulation& tr, std::vector<signed char>& signs,
                            const std::vector<char>& boundary, double fraction)
 {
-  const std::vector<std::array<int, 2> > edges = tr.edges();
+  typedef typename Triangulation::Cell_index Cell_index;
   const std::size_t n = signs.size();
-  std::vector<std::size_t> offsets(n + 1, 0);
-  for(const auto& e : edges) { ++offsets[e[0] + 1]; ++offsets[e[1] + 1]; }
-  for(std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
-  std::vector<int> adjacency(offsets[n]);
-  {
-    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
-    for(const auto& e : edges) { adjacency[fill[e[0]]++] = e[1]; adjacency[fill[e[1]]++] = e[0]; }
-  }
-  // clusters of equal sign
-  std::vector<int> cluster(n, -1);
-  std::vector<std::size_t> size;
-  std::vector<char> touches_boundary;
-  std::vector<int> stack;
-  for(std::size_t s = 0; s < n; ++s)
-  {
-    if(cluster[s] >= 0) continue;
-    const int id = int(size.size());
-    size.push_back(0);
-    touches_boundary.push_back(0);
-    cluster[s] = id;
-    stack.assign(1, int(s));
-    while(!stack.empty())
-    {
-      const int v = stack.back();
-      stack.pop_back();
-      ++size[id];
-      if(boundary[v]) touches_boundary[id] = 1;
-      for(std::size_t i = offsets[v]; i < offsets[v + 1]; ++i)
-        if(cluster[adjacency[i]] < 0 && signs[adjacency[i]] == signs[v])
+  // clusters of equal sign by union-find over the edges of each leaf: one pass over the
+  // leaves in memory order (the edge list of the triangulation, which an adjacency search
+  // needs, took 0.45 s of the dragon's 437k points)
+  Disjoint_sets clusters(n);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
         {
-          cluster[adjacency[i]] = id;
-          stack.push_back(adjacency[i]);
+          const std::uint32_t a = std::uint32_t(tr.vertex(c, i)), b = std::uint32_t(tr.vertex(c, j));
+          if(signs[a] == signs[b]) clusters.unite(a, b);
         }
-    }
+  // per root: size and whether the cluster reaches the box boundary
+  std::vector<std::uint32_t> root(n), size(n, 0);
+  std::vector<char> touches_boundary(n, 0);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    root[v] = clusters.find(std::uint32_t(v));
+    ++size[root[v]];
+    if(boundary[v]) touches_boundary[root[v]] = 1;
   }
-  std::vector<signed char> cluster_sign(size.size());
-  for(std::size_t v = 0; v < n; ++v) cluster_sign[cluster[v]] = signs[v];
   std::size_t largest_inside = 0;
-  for(std::size_t c = 0; c < size.size(); ++c)
-    if(cluster_sign[c] < 0) largest_inside = (std::max)(largest_inside, size[c]);
+  for(std::size_t v = 0; v < n; ++v)
+    if(root[v] == v && signs[v] < 0) largest_inside = (std::max)(largest_inside, std::size_t(size[v]));
   const double threshold = fraction * double(largest_inside);
-  std::vector<char> flip(size.size(), 0);
+  std::vector<char> flip(n, 0);
   std::size_t flipped = 0;
-  for(std::size_t c = 0; c < size.size(); ++c)
-    if(double(size[c]) < threshold && (cluster_sign[c] < 0 || !touches_boundary[c]))
+  for(std::size_t v = 0; v < n; ++v)
+    if(root[v] == v && double(size[v]) < threshold && (signs[v] < 0 || !touches_boundary[v]))
     {
-      flip[c] = 1;
+      flip[v] = 1;
       ++flipped;
     }
   for(std::size_t v = 0; v < n; ++v)
-    if(flip[cluster[v]]) signs[v] = static_cast<signed char>(-signs[v]);
+    if(flip[root[v]]) signs[v] = static_cast<signed char>(-signs[v]);
   return flipped;
 }
 
