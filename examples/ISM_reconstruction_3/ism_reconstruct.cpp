@@ -268,6 +268,11 @@ const std::vector<Option>& options()
                     "a handle held open only by vertices nearer to the surface than this many times the "
                     "median size of the leaves it crosses is removed (tunnel filled, else bridge cut); "
                     "0: keep all"),
+    Option{"--no-tangent-planes", "tangent_plane_signs", nullptr,
+           "keep the Ising sign of every vertex (the paper) instead of giving the vertices near the "
+           "points the side of their tangent planes, oriented by the in/out function",
+           [](Settings& s, const std::string&, const std::string&) { s.tangent_plane_signs = false; },
+           [](const Settings& s) { return std::string(s.tangent_plane_signs ? "tangent planes" : "Ising signs"); }},
     ISM_INTEGER_OPTION("--memory-limit", memory_limit,
                        "bytes the reconstruction may use on top of the input; 0: what the machine allows "
                        "(physical memory, ulimit -v and -d, cgroup limit). Beyond it the run stops with an "

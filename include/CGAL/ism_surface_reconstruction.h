@@ -176,6 +176,11 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamType{`double`, in [0, 10]}
       \cgalParamDefault{`0.15`}
     \cgalParamNEnd
+    \cgalParamNBegin{tangent_plane_signs}
+      \cgalParamDescription{after the distances and the handles, a vertex nearer to the points than 0.75 times the median size of the leaves the surface crosses takes the side of the tangent planes of its nearest points (PCA normals oriented by the in/out function, as `ism_orient_normals()` does) and its distance to them as value; islands and thin handles are then removed again; `false`: the Ising sign of every vertex (the paper). Measured at 36k points: no query farther than 1 % of the diagonal on the wrong side on 13 of 13 samplings of the bunny (8 of 13 without), mean distance 0.051 % of the diagonal instead of 0.075 %; on 21 meshes of libcgal-demo 14 such queries instead of 28, homer gains a handle}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{distance_estimate}
       \cgalParamDescription{how the value of a vertex (its sign times a distance) is estimated}
       \cgalParamType{`CGAL::ISM_reconstruction_3::Distance_estimate`}
@@ -207,7 +212,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
-      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd

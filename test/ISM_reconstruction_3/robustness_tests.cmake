@@ -25,8 +25,9 @@ set_tests_properties(robustness_memory PROPERTIES LABELS "robustness;no_sanitize
 # in the child's 2 GB before allocating: about 45 s and at most 0.7 GB resident in all.
 
 # Known failures of the method, kept visible but not run by default (ctest reports them as
-# disabled): with the defaults the bunny comes out with a spurious handle (genus 1 to 3) or
-# a few wrong far in/out queries under noise, outliers and non-uniform sampling.
+# disabled): a query or two farther than 1 % of the diagonal on the wrong side (dents of
+# 1.0-1.1 % of the diagonal, one leaf deep), on the clean bunny and with noise; non-uniform
+# sampling. The outliers case passes since the tangent-plane signs.
 # Run them with: test_robustness <meshes> <tmp> <section>.
 set_tests_properties(robustness_noise_clean robustness_noise_gauss_0.25 robustness_noise_gauss_0.5
-                     robustness_outliers_1 robustness_nonuniform PROPERTIES DISABLED TRUE)
+                     robustness_nonuniform PROPERTIES DISABLED TRUE)

@@ -5,6 +5,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
+#include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -579,6 +580,50 @@ void taubin_test(const Tet_mesh& m)
   CHECK(lone[0] == Point({1., 2., 3.}), "taubin: isolated vertex moved");
 }
 
+// A plate z in [-t, t] sampled on both faces, normals oriented outward (+z above, -z below),
+// with the points of one patch left without a normal. Vertices on the z axis: the one
+// between the faces must go inside, those beyond the faces outside, one past the plate's
+// rim (beside the tangent planes) and one of the box boundary must keep their sign, and a
+// vertex whose only voters have no normal must keep its sign.
+void tangent_plane_test()
+{
+  const double t = 0.02, h = 0.01;
+  std::vector<std::array<double, 3> > points, normals;
+  for(int i = -20; i <= 20; ++i)
+    for(int j = -20; j <= 20; ++j)
+      for(int side : { -1, 1 })
+      {
+        const double x = i * h, y = j * h;
+        points.push_back({{ x, y, side * t }});
+        const bool silent = x > 0.12 && y > 0.12;  // a patch of points that may not vote
+        normals.push_back({{ 0., 0., silent ? 0. : double(side) }});
+      }
+  const internal::Point_neighbors neighbors(points);
+  // vertices: between the faces, above, below, past the rim (x = 0.24, beyond the plate's
+  // edge at 0.2, just above the upper face's plane), fixed, in the silent patch (between
+  // its faces)
+  const std::vector<std::array<double, 3> > vertices = {
+      {{ 0.001, 0.002, 0. }}, {{ 0.001, 0.002, 0.035 }}, {{ 0.001, 0.002, -0.035 }},
+      {{ 0.24, 0.002, 0.021 }}, {{ 0.05, 0.05, 0. }}, {{ 0.165, 0.165, 0. }} };
+  const std::vector<char> fixed = { 0, 0, 0, 0, 1, 0 };
+  const double radius = 0.05;
+  const std::vector<internal::Voters> voters = internal::voters_of_vertices(vertices, fixed, neighbors, radius);
+  CHECK(voters[4][0] == internal::none, "tangent planes: a box boundary vertex has no voters");
+  std::vector<signed char> signs = { 1, -1, -1, 1, 1, 1 };
+  std::vector<double> values = { 0.5, -0.5, -0.5, 0.5, 0.5, 0.5 };
+  const std::size_t changed = internal::sign_by_tangent_planes(
+      points, vertices, voters, [&](std::uint32_t i) -> const std::array<double, 3>& { return normals[i]; }, radius,
+      1e-12, signs, values);
+  CHECK(signs[0] == -1 && values[0] < 0 && std::abs(values[0] + t) < 1e-3,
+        "tangent planes: a vertex between the faces of a plate goes inside, at the plate's half thickness");
+  CHECK(signs[1] == 1 && std::abs(values[1] - 0.015) < 2e-3, "tangent planes: a vertex above the plate goes outside");
+  CHECK(signs[2] == 1 && std::abs(values[2] - 0.015) < 2e-3, "tangent planes: a vertex below the plate goes outside");
+  CHECK(signs[3] == 1 && values[3] == 0.5, "tangent planes: a vertex past the rim, beside the planes, keeps its sign");
+  CHECK(signs[4] == 1 && values[4] == 0.5, "tangent planes: a box boundary vertex keeps its sign");
+  CHECK(signs[5] == 1 && values[5] == 0.5, "tangent planes: voters without a normal do not vote");
+  CHECK(changed == 3, "tangent planes: 3 vertices changed side, got " + std::to_string(changed));
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -609,6 +654,9 @@ int main()
   std::cout << "Thin handles" << std::endl;
   thin_handle_test(grid, drilled_sphere_value, "sphere drilled by a thin hole", 0, 2);
   thin_handle_test(grid, torus_value, "torus with a thick tube", 0, 0);
+
+  std::cout << "Tangent-plane signs" << std::endl;
+  tangent_plane_test();
 
   std::cout << "Taubin smoothing" << std::endl;
   taubin_test(grid);

@@ -176,6 +176,7 @@ usage huge_integer --sweeps --sweeps 99999999999999999999 sphere.xyz usage.off
 usage nan_value --smoothing-lambda --smoothing-lambda nan sphere.xyz usage.off
 usage bad_distance --distance --distance far sphere.xyz usage.off
 usage switch_with_value --no-clamp --no-clamp=1 sphere.xyz usage.off
+usage switch_with_value_2 --no-tangent-planes --no-tangent-planes=0 sphere.xyz usage.off
 usage no_output OUTPUT sphere.xyz
 usage bad_output_extension usage.stl sphere.xyz usage.stl
 usage bad_tets_extension --tets sphere.xyz usage.off --tets usage.ele
@@ -190,7 +191,8 @@ if run help 0 --help; then
   for flag in --maximum-depth --min-points-per-cell --coplanarity-threshold --empty-cell-error \
               --initial-temperature --cooling-factor --sweeps --warm-start-interval --seed \
               --smoothing-iterations --smoothing-lambda --smoothing-mu --no-clamp --distance \
-              --box-margin --paper --tets --quiet; do
+              --box-margin --minimum-island-fraction --thin-handle-depth --no-tangent-planes \
+              --memory-limit --paper --tets --quiet; do
     grep -Eq -- "^ $flag\b.*\[[^]]+\]\$" help.records || fail "help: no entry for $flag ending with its [default]"
   done
   grep -Eq -- "^ -h, --help\b" help.records || fail "help: --help is not listed"

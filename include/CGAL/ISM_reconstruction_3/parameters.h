@@ -54,6 +54,7 @@ enum box_margin_t { box_margin };
 enum paper_settings_t { paper_settings };
 enum minimum_island_fraction_t { minimum_island_fraction };
 enum thin_handle_depth_t { thin_handle_depth };
+enum tangent_plane_signs_t { tangent_plane_signs };
 enum memory_limit_t { memory_limit };
 
 } // namespace internal_np
@@ -94,6 +95,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(box_margin)
 CGAL_ISM_ADD_NAMED_PARAMETER(paper_settings)
 CGAL_ISM_ADD_NAMED_PARAMETER(minimum_island_fraction)
 CGAL_ISM_ADD_NAMED_PARAMETER(thin_handle_depth)
+CGAL_ISM_ADD_NAMED_PARAMETER(tangent_plane_signs)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 /// \endcond
 

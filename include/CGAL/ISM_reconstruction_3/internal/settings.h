@@ -58,6 +58,9 @@ struct Settings
   /*! a handle of the surface that only vertices nearer to it than this many times the median size of the leaves
       it crosses hold open is removed (a tunnel filled, else a bridge cut); 0: keep all handles */
   double thin_handle_depth = 0.15;
+  /*! near the points, a vertex takes the side of the tangent planes of its nearest points,
+      whose normals (PCA) are oriented by the in/out function; false: the Ising sign (the paper) */
+  bool tangent_plane_signs = true;
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
   /// The settings of the paper (section 4): squared nearest-point distance, no clamping
@@ -73,6 +76,7 @@ struct Settings
     s.coplanarity_threshold = 1e-3;
     s.minimum_island_fraction = 0;
     s.thin_handle_depth = 0;
+    s.tangent_plane_signs = false;
     s.smoothing_iterations = 3;
     return s;
   }
@@ -148,6 +152,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.box_margin = choose_parameter(get_parameter(np, inp::box_margin), d.box_margin);
   s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
   s.thin_handle_depth = choose_parameter(get_parameter(np, inp::thin_handle_depth), d.thin_handle_depth);
+  s.tangent_plane_signs = choose_parameter(get_parameter(np, inp::tangent_plane_signs), d.tangent_plane_signs);
   s.memory_limit = choose_parameter(get_parameter(np, inp::memory_limit), d.memory_limit);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;

@@ -1,0 +1,182 @@
+// Copyright (c) 2026 ISM_reconstruction_3 developers.
+// This file is part of CGAL (www.cgal.org).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : ISM_reconstruction_3 developers
+
+#ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
+#define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
+
+#include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/property_map.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace ISM_reconstruction_3 {
+namespace internal {
+
+// The Ising signs are decided on the leaves' vertices, and the leaves near the points are
+// about as large as a thin part of the surface is thick (an ear tip, a foot of the bunny):
+// one vertex inside such a part given the wrong sign loses a piece of it a leaf deep. The
+// points know better there, once their normals are oriented: the sign of a vertex near the
+// points is the side of their tangent planes it lies on (the signed distance of Hoppe et
+// al., SIGGRAPH 1992), with normals oriented by the in/out function itself.
+//
+// Runs `body(i)` for i in [0, n), in parallel when TBB is there (each i writes its own slot).
+template <class Body>
+void for_each_index(std::size_t n, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const tbb::blocked_range<std::size_t>& r) {
+    for(std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+  });
+#else
+  for(std::size_t i = 0; i < n; ++i) body(i);
+#endif
+}
+
+// The k nearest input points of a location, by index (CGAL's kd-tree).
+class Point_neighbors
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef K::Point_3 P;
+  typedef CGAL::Search_traits_3<K> Base_traits;
+  typedef CGAL::Pointer_property_map<P>::type Point_pmap;
+  typedef CGAL::Search_traits_adapter<std::uint32_t, Point_pmap, Base_traits> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef Search::Tree Tree;
+
+public:
+  explicit Point_neighbors(const std::vector<std::array<double, 3> >& points)
+  {
+    m_points.reserve(points.size());
+    for(const auto& p : points) m_points.push_back(P(p[0], p[1], p[2]));
+    std::vector<std::uint32_t> ids(points.size());
+    for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = std::uint32_t(i);
+    m_pmap = CGAL::make_property_map(m_points);
+    m_tree.reset(new Tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(m_pmap)));
+    m_tree->build();  // before the parallel queries: the tree is then only read
+  }
+
+  // calls `visit(index, squared distance)` for the k nearest points of `q`
+  template <class Visitor>
+  void for_nearest(const std::array<double, 3>& q, unsigned int k, const Visitor& visit) const
+  {
+    Search search(*m_tree, P(q[0], q[1], q[2]), k, 0, true, Search::Distance(m_pmap));
+    for(const auto& item : search) visit(item.first, item.second);
+  }
+
+private:
+  std::vector<P> m_points;
+  Point_pmap m_pmap;  // into m_points, which no longer moves
+  std::unique_ptr<Tree> m_tree;
+};
+
+// Unoriented normals by PCA of the k nearest points of each of `points[which[j]]`, with the
+// coplanarity error of the fit (large where the neighbourhood is not a piece of one sheet: a
+// tube or a plate thinner than it, a crease, noise).
+inline void estimate_point_normals(const std::vector<std::array<double, 3> >& points, const Point_neighbors& neighbors,
+                                   const std::vector<std::uint32_t>& which, unsigned int k,
+                                   std::vector<std::array<double, 3> >& normals,
+                                   std::vector<float>& coplanarity_errors)
+{
+  normals.assign(which.size(), {{ 0., 0., 0. }});
+  coplanarity_errors.assign(which.size(), 1.f);
+  for_each_index(which.size(), [&](std::size_t j) {
+    const auto& p = points[which[j]];
+    Moments moments(p);
+    neighbors.for_nearest(p, k, [&](std::uint32_t i, double) { moments.add(points[i]); });
+    Plane_fit fit;
+    if(!moments.fit(fit)) return;
+    normals[j] = {{ fit.normal[0], fit.normal[1], fit.normal[2] }};
+    coplanarity_errors[j] = fit.coplanarity_error;
+  });
+}
+
+// The voters of each vertex: its 6 nearest points if the nearest is closer than `radius`
+// and the vertex is not on the box boundary (`fixed`: those stay outside so that the
+// surface stays closed), else none (all entries `none`). Only these points need an oriented
+// normal: on the dragon (437k points) they are about a third of the points.
+typedef std::array<std::uint32_t, 6> Voters;
+constexpr std::uint32_t none = std::uint32_t(-1);
+
+inline std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >& vertices,
+                                              const std::vector<char>& fixed, const Point_neighbors& neighbors,
+                                              double radius)
+{
+  std::vector<Voters> voters(vertices.size());
+  for_each_index(vertices.size(), [&](std::size_t v) {
+    Voters& w = voters[v];
+    w.fill(none);
+    if(fixed[v]) return;
+    double nearest2 = HUGE_VAL;
+    int m = 0;
+    neighbors.for_nearest(vertices[v], 6, [&](std::uint32_t i, double d2) {
+      w[m++] = i;
+      nearest2 = (std::min)(nearest2, d2);
+    });
+    if(!(nearest2 < radius * radius)) w.fill(none);
+  });
+  return voters;
+}
+
+// Re-signs the vertices that have voters. Each voter with an outward normal (`normal_of(i)`
+// null: it must not vote) votes with its signed distance (v - p).n, weighted by the inverse
+// distance; a vertex whose weighted signed distance is below 0.3 times its weighted
+// distance lies beside the tangent planes rather than in front of them (past the rim of a
+// plate, along a crease) and keeps its sign. The value of a re-signed vertex is that
+// weighted signed distance (never below `tiny`). Returns the number of vertices that
+// changed side.
+template <class NormalOf>
+std::size_t sign_by_tangent_planes(const std::vector<std::array<double, 3> >& points,
+                                   const std::vector<std::array<double, 3> >& vertices,
+                                   const std::vector<Voters>& voters, const NormalOf& normal_of, double radius,
+                                   double tiny, std::vector<signed char>& signs, std::vector<double>& values)
+{
+  std::vector<char> changed(vertices.size(), 0);
+  for_each_index(vertices.size(), [&](std::size_t v) {
+    const auto& x = vertices[v];
+    double weights = 0, signed_sum = 0, distance_sum = 0;
+    for(std::uint32_t i : voters[v])
+    {
+      if(i == none) continue;
+      const std::array<double, 3>& n = normal_of(i);
+      if(n[0] == 0 && n[1] == 0 && n[2] == 0) continue;
+      const auto& p = points[i];
+      const double d = std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) + (x[2] - p[2]) * (x[2] - p[2]));
+      const double w = 1. / (d + 1e-3 * radius);
+      weights += w;
+      signed_sum += w * ((x[0] - p[0]) * n[0] + (x[1] - p[1]) * n[1] + (x[2] - p[2]) * n[2]);
+      distance_sum += w * d;
+    }
+    if(!(weights > 0) || !(std::abs(signed_sum) >= 0.3 * distance_sum)) return;
+    const signed char s = signed_sum > 0 ? 1 : -1;
+    changed[v] = s != signs[v];
+    signs[v] = s;
+    values[v] = s * (std::max)(std::abs(signed_sum / weights), tiny);
+  });
+  return std::size_t(std::count(changed.begin(), changed.end(), 1));
+}
+
+} // namespace internal
+} // namespace ISM_reconstruction_3
+} // namespace CGAL
+
+#endif // CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
