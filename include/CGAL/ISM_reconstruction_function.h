@@ -511,6 +511,7 @@ private:
     for(std::uint32_t i = 0; i < m_points.size(); ++i)
       if(slot[i] == 0) { slot[i] = std::uint32_t(which.size()); which.push_back(i); }
     const std::size_t n = which.size();
+    if(n == 0) return;  // no vertex near the points
     std::vector<Xyz> xyz(n), normals;
     for(std::size_t j = 0; j < n; ++j) xyz[j] = m_points[which[j]];
     std::vector<float> coplanarity_errors;
@@ -528,7 +529,6 @@ private:
     // points the propagation reaches along the part). Propagated into a part the function
     // fills (homer's ear canal, a crease), orientations were wrong; a tube thinner than the
     // neighbourhood (the camel's tail) has no normal.
-    if(n == 0) return;
     std::vector<float> sorted(coplanarity_errors);
     std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
     const double max_error = (std::max)(0.05, 2. * double(sorted[n / 2]));
