@@ -282,10 +282,14 @@ public:
     const int k = refinement_index(level(c));
     const Point_3& z = m_points[m_cells[m_cells[c].first_child].vertices[k]];
     const int j1 = (k == 1) ? 2 : 1, j2 = (k == 3) ? 2 : 3;
-    typename Geom_traits::Orientation_3 orientation = m_gt.orientation_3_object();
-    const Orientation op = orientation(p, z, m_points[v[j1]], m_points[v[j2]]);
+    const Orientation op = m_gt.orientation_3_object()(p, z, m_points[v[j1]], m_points[v[j2]]);
     if(op == COPLANAR) return 0;
-    return op == orientation(m_points[v[0]], z, m_points[v[j1]], m_points[v[j2]]) ? 0 : 1;
+    // v0 is on child 0's side: orientation(v0, z, v_j1, v_j2) = orientation(v0, v_k, v_j1, v_j2)
+    // (z halves the edge v0 v_k), the cell's own orientation permuted, odd for k = 2. Read
+    // from the parity bit instead of a second predicate: point location costs one per level.
+    const Orientation v0_side = (is_positively_oriented(c) != (k == 2)) ? POSITIVE : NEGATIVE;
+    CGAL_assertion(v0_side == m_gt.orientation_3_object()(m_points[v[0]], z, m_points[v[j1]], m_points[v[j2]]));
+    return op == v0_side ? 0 : 1;
   }
 
   /// `true` if `p` lies in the closed tetrahedron `c`
@@ -322,6 +326,42 @@ public:
     while(!is_leaf(c))
       c = m_cells[c].first_child + child_side(c, p);
     return c;
+  }
+
+  /// the leaf containing `p`, found by walking across the faces of the leaves from the leaf
+  /// `hint`: a few steps when `hint` is near `p`, where `locate(p)` descends O(level) cells.
+  /// Falls back to `locate(p)` when `hint` is not a leaf or the walk is long.
+  /// \throws std::out_of_range if `p` is outside the box
+  Cell_index locate(const Point_3& p, Cell_index hint) const
+  {
+    const Cell_index c = walk_to(p, hint);
+    return c >= 0 ? c : locate(p);
+  }
+
+  /// the leaf containing `p` by the walk of `locate(p, hint)`, or `-1` if the walk leaves the
+  /// box, takes more than `maximum_steps` steps, or `hint` is not a leaf
+  Cell_index walk_to(const Point_3& p, Cell_index hint, int maximum_steps = 64) const
+  {
+    if(hint < 0 || hint >= Cell_index(m_cells.size()) || !is_leaf(hint)) return -1;
+    typename Geom_traits::Orientation_3 orientation = m_gt.orientation_3_object();
+    Cell_index c = hint;
+    for(int step = 0; step <= maximum_steps; ++step)
+    {
+      const std::array<Vertex_index, 4>& v = m_cells[c].vertices;
+      // p replaces vertex i: the orientation changes sign when p is beyond the face opposite i
+      const Orientation beyond = is_positively_oriented(c) ? NEGATIVE : POSITIVE;
+      int exit = -1;
+      for(int i = 0; i < 4 && exit < 0; ++i)
+      {
+        const Point_3* q[4] = { &m_points[v[0]], &m_points[v[1]], &m_points[v[2]], &m_points[v[3]] };
+        q[i] = &p;
+        if(orientation(*q[0], *q[1], *q[2], *q[3]) == beyond) exit = i;
+      }
+      if(exit < 0) return c;
+      c = m_cells[c].neighbors[exit];
+      if(c < 0) return -1;
+    }
+    return -1;
   }
   /// @}
 

@@ -28,6 +28,14 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#ifdef CGAL_ISM_TIMER
+#include <iostream>
+// the time since the last mark, of the steps inside the stages (stderr)
+#define CGAL_ISM_TIMER_MARK(timer, what) \
+  (std::cerr << "  [ISM timer] " << (what) << ": " << (timer).time() << " s\n", (timer).reset())
+#else
+#define CGAL_ISM_TIMER_MARK(timer, what) ((void)0)
+#endif
 #include <queue>
 #include <stdexcept>
 #include <string>
@@ -214,14 +222,24 @@ public:
     if(!report(0.9)) return false;
 
     timer.reset();
+#ifdef CGAL_ISM_TIMER
+    CGAL::Real_timer step;
+    step.start();
+#endif
     std::vector<char> near_surface(m_sign.size(), 0);
     for(Cell_index c = 0; c < Cell_index(m_tr->number_of_cells()); ++c)
       if(m_tr->is_leaf(c) && ISM_reconstruction_3::internal::is_crossed(m_tr->vertices(c), m_sign))
         for(int l = 0; l < 4; ++l) near_surface[m_tr->vertex(c, l)] = 1;
-    m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, m_vertex_xyz, m_sign,
+    // one kd-tree of the points serves the distances and the tangent planes
+    const ISM_reconstruction_3::internal::Point_neighbors neighbors(m_points);
+    CGAL_ISM_TIMER_MARK(step, "kd-tree");
+    m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign,
                                                                   m_settings.distance_estimate, near_surface);
+    CGAL_ISM_TIMER_MARK(step, "distances");
     if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary, m_value);
-    if(m_settings.tangent_plane_signs) sign_by_tangent_planes(boundary);
+    CGAL_ISM_TIMER_MARK(step, "thin handles");
+    if(m_settings.tangent_plane_signs) sign_by_tangent_planes(boundary, neighbors);
+    CGAL_ISM_TIMER_MARK(step, "tangent planes");
     m_stats.distance_time = timer.time();
     find_inner_point();
     return report(1.);
@@ -248,6 +266,18 @@ public:
     while(!m_tr->is_leaf(c))
       c = m_tr->child(c, m_tr->child_side(c, p));
     return FT(interpolate(c, x));
+  }
+
+  /// F(p), locating `p` by a walk across the leaves from the leaf `hint`
+  /// (`Triangulation::locate(p, hint)`), which then holds `p`'s leaf: evaluating F at
+  /// nearby points this way skips the descent of the cell tree.
+  FT operator()(const Point& p, Cell_index& hint) const
+  {
+    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    const Cell_index c = m_tr->walk_to(p, hint);
+    if(c < 0) return (*this)(p);
+    hint = c;
+    return FT(interpolate(c, {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }}));
   }
 
   /// a sphere holding the points, inside which the function is meant to be meshed
@@ -497,12 +527,48 @@ private:
   // normals are oriented by this function as ism_orient_normals() does. Measured on bunny00
   // at 36k points, 13 samplings: in/out 99.64-99.70 % -> 99.76-99.80 %, queries farther
   // than 1 % of the diagonal on the wrong side 0-3 -> 0, mean distance 0.075 -> 0.051 %.
-  void sign_by_tangent_planes(const std::vector<char>& boundary)
+  void sign_by_tangent_planes(const std::vector<char>& boundary, const ISM_reconstruction_3::internal::Point_neighbors& neighbors)
   {
     namespace I = ISM_reconstruction_3::internal;
-    const I::Point_neighbors neighbors(m_points);
+#ifdef CGAL_ISM_TIMER
+    CGAL::Real_timer step;
+    step.start();
+#endif
     const double radius = 0.75 * I::median_surface_leaf_size(*m_tr, m_vertex_xyz, m_sign);
-    const std::vector<I::Voters> voters = I::voters_of_vertices(m_vertex_xyz, boundary, neighbors, radius);
+    // the handles are judged on the distances of paper 4.3 (on the tangent-plane distances
+    // they left the bunny a handle on 1 of 13 samplings)
+    std::vector<double> depth(m_value);
+    m_stats.number_of_tangent_plane_vertices = vote_by_tangent_planes(neighbors, boundary, 0, radius);
+    CGAL_ISM_TIMER_MARK(step, "tangent planes: votes");
+    if(m_stats.number_of_tangent_plane_vertices == 0) return;
+    if(m_settings.minimum_island_fraction > 0)
+      m_stats.number_of_flipped_islands += I::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
+    for(std::size_t v = 0; v < m_sign.size(); ++v)
+    {
+      m_value[v] = m_sign[v] * std::abs(m_value[v]);
+      depth[v] = m_sign[v] * std::abs(depth[v]);
+    }
+    CGAL_ISM_TIMER_MARK(step, "tangent planes: islands");
+    if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary, depth);
+    CGAL_ISM_TIMER_MARK(step, "tangent planes: thin handles");
+    m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
+  }
+
+  // The vertices from `first` on that are not `fixed` and have a point nearer than `radius`
+  // take the side of the oriented tangent planes of their nearest points; returns the number
+  // of vertices that changed side.
+  std::size_t vote_by_tangent_planes(const ISM_reconstruction_3::internal::Point_neighbors& neighbors,
+                                     const std::vector<char>& fixed, std::size_t first, double radius)
+  {
+    namespace I = ISM_reconstruction_3::internal;
+    // no point is nearer than radius to a vertex whose distance estimate is not (it is at
+    // most the distance to the nearest point): only the others look for voters
+    const double reach = m_settings.distance_estimate == ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? radius * radius : radius;
+    std::vector<char> without_voters(fixed);
+    without_voters.resize(m_value.size(), 0);
+    for(std::size_t v = 0; v < m_value.size(); ++v)
+      if(v < first || !(std::abs(m_value[v]) < reach)) without_voters[v] = 1;
+    const std::vector<I::Voters> voters = I::voters_of_vertices(m_vertex_xyz, without_voters, neighbors, radius);
     // the points that vote, and their slot in the arrays below
     std::vector<std::uint32_t> slot(m_points.size(), I::none), which;
     for(const I::Voters& w : voters)
@@ -511,7 +577,7 @@ private:
     for(std::uint32_t i = 0; i < m_points.size(); ++i)
       if(slot[i] == 0) { slot[i] = std::uint32_t(which.size()); which.push_back(i); }
     const std::size_t n = which.size();
-    if(n == 0) return;  // no vertex near the points
+    if(n == 0) return 0;  // no vertex near the points
     std::vector<Xyz> xyz(n), normals;
     for(std::size_t j = 0; j < n; ++j) xyz[j] = m_points[which[j]];
     std::vector<float> coplanarity_errors;
@@ -537,23 +603,10 @@ private:
       const bool votes = tests[j].sign != 0 && coplanarity_errors[j] <= max_error && (tests[j].confident || outside[j]);
       for(int d = 0; d < 3; ++d) normals[j][d] = votes ? tests[j].sign * normals[j][d] : 0.;
     }
-    // the handles are judged on the distances of paper 4.3 (on the tangent-plane distances
-    // they left the bunny a handle on 1 of 13 samplings)
-    std::vector<double> depth(m_value);
     const double tiny = 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius()));
-    m_stats.number_of_tangent_plane_vertices = I::sign_by_tangent_planes(
-        m_points, m_vertex_xyz, voters, [&](std::uint32_t i) -> const Xyz& { return normals[slot[i]]; }, radius, tiny,
-        m_sign, m_value);
-    if(m_stats.number_of_tangent_plane_vertices == 0) return;
-    if(m_settings.minimum_island_fraction > 0)
-      m_stats.number_of_flipped_islands += I::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
-    for(std::size_t v = 0; v < m_sign.size(); ++v)
-    {
-      m_value[v] = m_sign[v] * std::abs(m_value[v]);
-      depth[v] = m_sign[v] * std::abs(depth[v]);
-    }
-    if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary, depth);
-    m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
+    return I::sign_by_tangent_planes(m_points, m_vertex_xyz, voters,
+                                     [&](std::uint32_t i) -> const Xyz& { return normals[slot[i]]; }, radius, tiny,
+                                     m_sign, m_value);
   }
 
   void find_inner_point()

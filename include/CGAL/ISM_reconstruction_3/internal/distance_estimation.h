@@ -10,12 +10,7 @@
 
 #include <CGAL/ISM_reconstruction_3/parameters.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/property_map.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -32,48 +27,36 @@ namespace internal {
 
 // Paper 4.3, extended to every vertex so that F is defined in the whole box:
 // f(v) = S_v * d(v), d from the nearest data points found by CGAL's kd-tree. The value is
-// never zero, so marching tetrahedra sees no degenerate crossing.
+// never zero, so marching tetrahedra sees no degenerate crossing. Only the vertices from
+// `first` on are estimated (those a refinement added), the others get 0.
 inline std::vector<double> estimate_distances(const std::vector<std::array<double, 3> >& points,
+                                              const Point_neighbors& neighbors,
                                               const std::vector<std::array<double, 3> >& vertices,
                                               const std::vector<signed char>& signs, Distance_estimate mode,
-                                              const std::vector<char>& near_surface = std::vector<char>())
+                                              const std::vector<char>& near_surface = std::vector<char>(),
+                                              std::size_t first = 0)
 {
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef K::Point_3 P;
-  typedef CGAL::Search_traits_3<K> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef Search::Tree Tree;
-  std::vector<P> pts;
-  pts.reserve(points.size());
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for(const auto& p : points)
-  {
-    pts.push_back(P(p[0], p[1], p[2]));
     for(int d = 0; d < 3; ++d) { lo[d] = (std::min)(lo[d], p[d]); hi[d] = (std::max)(hi[d], p[d]); }
-  }
   const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
   const double tiny = 1e-9 * (diag > 0 ? diag : 1.);
-  Tree tree(pts.begin(), pts.end());
-  tree.build();  // before the parallel queries: the tree is then only read
   // The plane fit only matters where marching tetrahedra interpolates: at the vertices of
   // leaves with a sign change (`near_surface`, all vertices if empty); elsewhere one
   // nearest point is enough to give F its magnitude.
-  const unsigned int k_plane = mode == LOCAL_PLANE_DISTANCE ? unsigned((std::min<std::size_t>)(12, pts.size())) : 1;
+  const unsigned int k_plane = mode == LOCAL_PLANE_DISTANCE ? unsigned((std::min<std::size_t>)(12, points.size())) : 1;
   std::vector<double> values(vertices.size());
 
   auto one = [&](std::size_t v) {
-    const P q(vertices[v][0], vertices[v][1], vertices[v][2]);
     const unsigned int k = (near_surface.empty() || near_surface[v]) ? k_plane : 1;
-    Search search(tree, q, k);
     double nearest2 = HUGE_VAL, farthest2 = 0;
     Moments moments(vertices[v]);
-    for(const auto& item : search)
-    {
-      nearest2 = (std::min)(nearest2, item.second);
-      farthest2 = (std::max)(farthest2, item.second);
-      moments.add({{ item.first.x(), item.first.y(), item.first.z() }});
-    }
+    neighbors.for_nearest(vertices[v], k, [&](std::uint32_t i, double d2) {
+      nearest2 = (std::min)(nearest2, d2);
+      farthest2 = (std::max)(farthest2, d2);
+      moments.add(points[i]);
+    });
     double d;
     if(mode == NEAREST_POINT_SQUARED_DISTANCE) d = nearest2;
     else d = std::sqrt(nearest2);
@@ -85,12 +68,12 @@ inline std::vector<double> estimate_distances(const std::vector<std::array<doubl
     values[v] = signs[v] * (std::max)(d, mode == NEAREST_POINT_SQUARED_DISTANCE ? tiny * tiny : tiny);
   };
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices.size(), 1024),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>((std::min)(first, vertices.size()), vertices.size(), 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for(std::size_t v = r.begin(); v != r.end(); ++v) one(v);
                     });
 #else
-  for(std::size_t v = 0; v < vertices.size(); ++v) one(v);
+  for(std::size_t v = first; v < vertices.size(); ++v) one(v);
 #endif
   return values;
 }

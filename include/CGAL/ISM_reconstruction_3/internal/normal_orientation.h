@@ -76,7 +76,8 @@ Orientation_test ism_orientation_of(const Function& function, const std::array<d
   const Triangulation& tr = function.triangulation();
   const Point pp(p[0], p[1], p[2]);
   if(tr.locate_root(pp) < 0) return result;
-  const auto v = tr.vertices(tr.locate(pp));
+  const typename Triangulation::Cell_index leaf = tr.locate(pp);
+  const auto v = tr.vertices(leaf);
   double size2 = 0;
   for(int i = 0; i < 4; ++i)
     for(int j = i + 1; j < 4; ++j)
@@ -93,11 +94,13 @@ Orientation_test ism_orientation_of(const Function& function, const std::array<d
   result.leaf_size = std::sqrt(size2);
   const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if(!(nn > 0) || !(result.leaf_size > 0)) return result;
+  // the points are located by walks from p's leaf, each step from the leaf of the last
+  typename Triangulation::Cell_index plus = leaf, minus = leaf;
   for(double step : { 0.5, 1., 2., 4. })
   {
     const double h = step * result.leaf_size / nn;
-    const double fp = to_double(function(Point(p[0] + h * n[0], p[1] + h * n[1], p[2] + h * n[2])));
-    const double fm = to_double(function(Point(p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2])));
+    const double fp = to_double(function(Point(p[0] + h * n[0], p[1] + h * n[1], p[2] + h * n[2]), plus));
+    const double fm = to_double(function(Point(p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]), minus));
     const double scale = std::abs(fp) + std::abs(fm);
     if(!(scale > 0)) continue;
     if(step <= 1. && (fp > 0) != (fm > 0))

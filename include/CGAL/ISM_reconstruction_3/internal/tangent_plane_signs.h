@@ -9,12 +9,7 @@
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
 
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/property_map.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -25,7 +20,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -51,43 +45,6 @@ void for_each_index(std::size_t n, const Body& body)
   for(std::size_t i = 0; i < n; ++i) body(i);
 #endif
 }
-
-// The k nearest input points of a location, by index (CGAL's kd-tree).
-class Point_neighbors
-{
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef K::Point_3 P;
-  typedef CGAL::Search_traits_3<K> Base_traits;
-  typedef CGAL::Pointer_property_map<P>::type Point_pmap;
-  typedef CGAL::Search_traits_adapter<std::uint32_t, Point_pmap, Base_traits> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef Search::Tree Tree;
-
-public:
-  explicit Point_neighbors(const std::vector<std::array<double, 3> >& points)
-  {
-    m_points.reserve(points.size());
-    for(const auto& p : points) m_points.push_back(P(p[0], p[1], p[2]));
-    std::vector<std::uint32_t> ids(points.size());
-    for(std::size_t i = 0; i < ids.size(); ++i) ids[i] = std::uint32_t(i);
-    m_pmap = CGAL::make_property_map(m_points);
-    m_tree.reset(new Tree(ids.begin(), ids.end(), Tree::Splitter(), Traits(m_pmap)));
-    m_tree->build();  // before the parallel queries: the tree is then only read
-  }
-
-  // calls `visit(index, squared distance)` for the k nearest points of `q`
-  template <class Visitor>
-  void for_nearest(const std::array<double, 3>& q, unsigned int k, const Visitor& visit) const
-  {
-    Search search(*m_tree, P(q[0], q[1], q[2]), k, 0, true, Search::Distance(m_pmap));
-    for(const auto& item : search) visit(item.first, item.second);
-  }
-
-private:
-  std::vector<P> m_points;
-  Point_pmap m_pmap;  // into m_points, which no longer moves
-  std::unique_ptr<Tree> m_tree;
-};
 
 // Unoriented normals by PCA of the k nearest points of each of `points[which[j]]`, with the
 // coplanarity error of the fit (large where the neighbourhood is not a piece of one sheet: a
