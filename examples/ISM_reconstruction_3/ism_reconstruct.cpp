@@ -273,6 +273,13 @@ const std::vector<Option>& options()
            "points the side of their tangent planes, oriented by the in/out function",
            [](Settings& s, const std::string&, const std::string&) { s.tangent_plane_signs = false; },
            [](const Settings& s) { return std::string(s.tangent_plane_signs ? "tangent planes" : "Ising signs"); }},
+    ISM_INTEGER_OPTION("--surface-refinement-passes", surface_refinement_passes,
+                       "after the signs, bisect the leaves in which the function misses a point by more "
+                       "than --surface-refinement-tolerance times their longest edge (and the noise), up "
+                       "to this many times; 0: none"),
+    ISM_REAL_OPTION("--surface-refinement-tolerance", surface_refinement_tolerance,
+                    "miss of the function at a point, relative to its leaf's longest edge, above which "
+                    "the leaf is bisected"),
     ISM_INTEGER_OPTION("--memory-limit", memory_limit,
                        "bytes the reconstruction may use on top of the input; 0: what the machine allows "
                        "(physical memory, ulimit -v and -d, cgroup limit). Beyond it the run stops with an "

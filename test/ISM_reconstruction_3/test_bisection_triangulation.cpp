@@ -473,6 +473,25 @@ int main(int argc, char** argv)
       if(std::find(holders.begin(), holders.end(), bt.locate(q)) == holders.end()) ++wrong;
     }
     CHECK(wrong == 0, "point location agrees with brute force (" + std::to_string(wrong) + " wrong)");
+    // the walk from a hint: from the leaf of a nearby point (a few steps) and from a random
+    // leaf (long walks fall back to the descent); the leaf found holds the query either way
+    long walked = 0, wrong_walk = 0;
+    for(std::size_t i = 0; i < queries.size(); ++i)
+    {
+      const P& q = queries[i];
+      const auto near_hint = bt.locate(queries[i > 0 ? i - 1 : i]);
+      const auto far_hint = leaves[rnd.get_int(0, int(leaves.size()))];
+      for(auto hint : { near_hint, far_hint })
+      {
+        const auto c = bt.locate(q, hint);
+        if(!bt.is_leaf(c) || !bt.has_on(c, q)) ++wrong_walk;
+        const auto w = bt.walk_to(q, hint);
+        if(w >= 0 && (++walked, !bt.has_on(w, q))) ++wrong_walk;
+      }
+    }
+    CHECK(wrong_walk == 0 && walked > 0, "point location by a walk from a hint (" + std::to_string(wrong_walk) +
+                                             " wrong, " + std::to_string(walked) + " walks ended in a leaf)");
+    CHECK(bt.walk_to(P(2, 0.5, 0.5), leaves[0]) < 0, "a walk towards a point outside the box ends with -1");
 
     // adjacency: leaves around an edge, around a vertex, edges
     {

@@ -6,6 +6,9 @@
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
+#include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
+#include <CGAL/Bisection_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -624,6 +627,48 @@ void tangent_plane_test()
   CHECK(changed == 3, "tangent planes: 3 vertices changed side, got " + std::to_string(changed));
 }
 
+// The leaves in which F misses the points (surface_refinement.h): F linear (z - 0.5) on a
+// uniform Bisection_triangulation_3 of the unit cube. Points on its zero level miss nothing;
+// a point a quarter of its leaf above it is reported, alone; noise of the same amplitude on
+// every point hides it (3 times the median miss); a leaf at the maximum level is not reported.
+void misfit_leaves_test()
+{
+  typedef CGAL::Epick K;
+  typedef CGAL::Bisection_triangulation_3<K> Tr;
+  Tr tr(K::Iso_cuboid_3(K::Point_3(0, 0, 0), K::Point_3(1, 1, 1)));
+  tr.refine_uniformly(9);
+  std::vector<Point> xyz;
+  for(std::size_t v = 0; v < tr.number_of_vertices(); ++v)
+    xyz.push_back({{ tr.point(int(v)).x(), tr.point(int(v)).y(), tr.point(int(v)).z() }});
+  // F at x in its leaf: linear vertex values z - 0.5 interpolate to exactly that
+  auto f = [](Tr::Cell_index, const Point& x) { return x[2] - 0.5; };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.05, 0.95);
+  std::vector<Point> points;
+  for(int i = 0; i < 400; ++i) points.push_back({{ u(rng), u(rng), 0.5 }});
+  std::vector<std::uint32_t> order = internal::morton_order(points);
+  std::sort(order.begin(), order.end());
+  bool permutation = order.size() == points.size();
+  for(std::size_t i = 0; permutation && i < order.size(); ++i) permutation = order[i] == i;
+  CHECK(permutation, "misfit leaves: the Morton order is a permutation of the points");
+  CHECK(internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., 30).empty(),
+        "misfit leaves: points on the zero level of a linear F miss nothing");
+  // level 9: cubes of side 1/8, the longest edge of a leaf 0.125 sqrt(3) = 0.22
+  const Point above = {{ 0.31, 0.42, 0.5 + 0.0625 }};
+  points.push_back(above);
+  const auto misfit = internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., 30);
+  const Tr::Cell_index holder = tr.locate(K::Point_3(above[0], above[1], above[2]));
+  CHECK(misfit.size() == 1 && misfit[0] == holder, "misfit leaves: the leaf of the one point off the zero level, alone");
+  CHECK(internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., tr.level(holder)).empty(),
+        "misfit leaves: a leaf at the maximum level is not reported");
+  std::vector<Point> noisy(points);
+  for(std::size_t i = 0; i + 1 < noisy.size(); ++i) noisy[i][2] += (i % 2 ? 1 : -1) * 0.03;
+  CHECK(internal::misfit_leaves(tr, xyz, noisy, internal::morton_order(noisy), f, 0.05, 3., 30).empty(),
+        "misfit leaves: a miss of 2 times the noise is not a bend");
+  CHECK(internal::misfit_leaves(tr, xyz, noisy, internal::morton_order(noisy), f, 0.05, 1.5, 30).size() == 1,
+        "misfit leaves: ... but of more than 1.5 times the noise it is");
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -657,6 +702,9 @@ int main()
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();
+
+  std::cout << "Misfit leaves" << std::endl;
+  misfit_leaves_test();
 
   std::cout << "Taubin smoothing" << std::endl;
   taubin_test(grid);

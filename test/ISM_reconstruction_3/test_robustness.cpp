@@ -1041,6 +1041,13 @@ std::vector<Case> corpus_cases()
   ISM_PARAM_CASE("box_margin_10", ANY, params::box_margin(10.));
   ISM_PARAM_CASE("box_margin_11", ERROR, params::box_margin(11.));
   ISM_PARAM_CASE("box_margin_1e-300", ANY, params::box_margin(1e-300));
+  ISM_PARAM_CASE("surface_refinement_passes_-1", ERROR, params::surface_refinement_passes(-1));
+  ISM_PARAM_CASE("surface_refinement_passes_11", ERROR, params::surface_refinement_passes(11));
+  ISM_PARAM_CASE("surface_refinement_passes_10", ANY, params::surface_refinement_passes(10));
+  ISM_PARAM_CASE("surface_refinement_tolerance_0", ERROR, params::surface_refinement_tolerance(0.));
+  ISM_PARAM_CASE("surface_refinement_tolerance_nan", ERROR, params::surface_refinement_tolerance(NaN));
+  ISM_PARAM_CASE("surface_refinement_tolerance_1e-9", ANY,
+                 params::surface_refinement_tolerance(1e-9, params::surface_refinement_passes(3)));
   ISM_PARAM_CASE("random_seed_0", ANY, params::random_seed(0));
   ISM_PARAM_CASE("random_seed_max", ANY, params::random_seed(std::uint64_t(-1)));
   ISM_PARAM_CASE("distance_nearest_point_squared", ANY, params::distance_estimate(ISM::NEAREST_POINT_SQUARED_DISTANCE));

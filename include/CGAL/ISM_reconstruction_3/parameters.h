@@ -55,6 +55,8 @@ enum paper_settings_t { paper_settings };
 enum minimum_island_fraction_t { minimum_island_fraction };
 enum thin_handle_depth_t { thin_handle_depth };
 enum tangent_plane_signs_t { tangent_plane_signs };
+enum surface_refinement_passes_t { surface_refinement_passes };
+enum surface_refinement_tolerance_t { surface_refinement_tolerance };
 enum memory_limit_t { memory_limit };
 
 } // namespace internal_np
@@ -96,6 +98,8 @@ CGAL_ISM_ADD_NAMED_PARAMETER(paper_settings)
 CGAL_ISM_ADD_NAMED_PARAMETER(minimum_island_fraction)
 CGAL_ISM_ADD_NAMED_PARAMETER(thin_handle_depth)
 CGAL_ISM_ADD_NAMED_PARAMETER(tangent_plane_signs)
+CGAL_ISM_ADD_NAMED_PARAMETER(surface_refinement_passes)
+CGAL_ISM_ADD_NAMED_PARAMETER(surface_refinement_tolerance)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 /// \endcond
 

@@ -28,6 +28,21 @@ bool is_crossed(const Vertices& v, const std::vector<signed char>& signs)
   return signs[v[0]] != signs[v[1]] || signs[v[0]] != signs[v[2]] || signs[v[0]] != signs[v[3]];
 }
 
+// The longest edge of the leaf with vertices `v` (positions `xyz`): the size of a leaf.
+template <class Vertices>
+double longest_edge(const Vertices& v, const std::vector<std::array<double, 3> >& xyz)
+{
+  double longest2 = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+    {
+      double l2 = 0;
+      for(int d = 0; d < 3; ++d) l2 += (xyz[v[i]][d] - xyz[v[j]][d]) * (xyz[v[i]][d] - xyz[v[j]][d]);
+      longest2 = (std::max)(longest2, l2);
+    }
+  return std::sqrt(longest2);
+}
+
 // The leaves around the vertices v without `skip[v]`, as compressed rows: those of v are
 // leaves[offsets[v]] .. leaves[offsets[v + 1] - 1] (none for the others).
 template <class Triangulation>
@@ -154,19 +169,7 @@ double median_surface_leaf_size(const Triangulation& tr, const std::vector<std::
   typedef typename Triangulation::Cell_index Cell_index;
   std::vector<double> sizes;
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
-    if(tr.is_leaf(c) && is_crossed(tr.vertices(c), signs))
-    {
-      const auto& v = tr.vertices(c);
-      double longest = 0;
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j)
-        {
-          double l2 = 0;
-          for(int d = 0; d < 3; ++d) l2 += (xyz[v[i]][d] - xyz[v[j]][d]) * (xyz[v[i]][d] - xyz[v[j]][d]);
-          longest = (std::max)(longest, l2);
-        }
-      sizes.push_back(std::sqrt(longest));
-    }
+    if(tr.is_leaf(c) && is_crossed(tr.vertices(c), signs)) sizes.push_back(longest_edge(tr.vertices(c), xyz));
   if(sizes.empty()) return 0;
   std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
   return sizes[sizes.size() / 2];

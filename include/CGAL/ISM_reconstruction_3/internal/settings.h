@@ -61,6 +61,11 @@ struct Settings
   /*! near the points, a vertex takes the side of the tangent planes of its nearest points,
       whose normals (PCA) are oriented by the in/out function; false: the Ising sign (the paper) */
   bool tangent_plane_signs = true;
+  /*! after the signs, the leaves in which F misses a point by more than `surface_refinement_tolerance` times
+      their longest edge (and 3 times the median miss, the noise) are bisected, up to this many times; 0: none */
+  int surface_refinement_passes = 2;
+  /*! the miss of F at a point, relative to the longest edge of its leaf, above which the leaf is bisected */
+  double surface_refinement_tolerance = 0.05;
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
   /// The settings of the paper (section 4): squared nearest-point distance, no clamping
@@ -77,6 +82,7 @@ struct Settings
     s.minimum_island_fraction = 0;
     s.thin_handle_depth = 0;
     s.tangent_plane_signs = false;
+    s.surface_refinement_passes = 0;
     s.smoothing_iterations = 3;
     return s;
   }
@@ -121,6 +127,10 @@ struct Settings
     if(!(minimum_island_fraction >= 0 && minimum_island_fraction < 1))
       fail("minimum_island_fraction", str(minimum_island_fraction), "[0, 1)");
     if(!(thin_handle_depth >= 0 && thin_handle_depth <= 10)) fail("thin_handle_depth", str(thin_handle_depth), "[0, 10]");
+    if(surface_refinement_passes < 0 || surface_refinement_passes > 10)
+      fail("surface_refinement_passes", std::to_string(surface_refinement_passes), "[0, 10]");
+    if(!(surface_refinement_tolerance > 0 && surface_refinement_tolerance <= 1))
+      fail("surface_refinement_tolerance", str(surface_refinement_tolerance), "(0, 1]");
   }
 };
 
@@ -153,6 +163,9 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
   s.thin_handle_depth = choose_parameter(get_parameter(np, inp::thin_handle_depth), d.thin_handle_depth);
   s.tangent_plane_signs = choose_parameter(get_parameter(np, inp::tangent_plane_signs), d.tangent_plane_signs);
+  s.surface_refinement_passes = choose_parameter(get_parameter(np, inp::surface_refinement_passes), d.surface_refinement_passes);
+  s.surface_refinement_tolerance =
+      choose_parameter(get_parameter(np, inp::surface_refinement_tolerance), d.surface_refinement_tolerance);
   s.memory_limit = choose_parameter(get_parameter(np, inp::memory_limit), d.memory_limit);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;
