@@ -280,6 +280,14 @@ const std::vector<Option>& options()
     ISM_REAL_OPTION("--surface-refinement-tolerance", surface_refinement_tolerance,
                     "miss of the function at a point, relative to its leaf's longest edge, above which "
                     "the leaf is bisected"),
+    ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
+                       "before the refinement, move noisy points onto a quadric fitted to their nearest "
+                       "points (jet smoothing) this many times; 0: never"),
+    ISM_INTEGER_OPTION("--point-smoothing-neighbors", point_smoothing_neighbors,
+                       "nearest points a point's quadric is fitted to"),
+    ISM_REAL_OPTION("--point-smoothing-noise", point_smoothing_noise,
+                    "smooth the points only if the median coplanarity error of their 12 nearest points "
+                    "exceeds this; 0: always"),
     ISM_INTEGER_OPTION("--memory-limit", memory_limit,
                        "bytes the reconstruction may use on top of the input; 0: what the machine allows "
                        "(physical memory, ulimit -v and -d, cgroup limit). Beyond it the run stops with an "

@@ -21,6 +21,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -99,7 +100,9 @@ public:
   /// (see `thin_handle_depth`); `number_of_tangent_plane_vertices`, the vertices whose side
   /// the oriented tangent planes of the points changed (see `tangent_plane_signs`);
   /// `number_of_misfit_leaves`, the leaves bisected because F missed their points (see
-  /// `surface_refinement_passes`);
+  /// `surface_refinement_passes`); `neighborhood_coplanarity`, the noise measure of
+  /// `point_smoothing_noise`, and `number_of_point_smoothing_passes`; the refinement time
+  /// includes the point smoothing;
   /// `final_energy`, the Ising energy of the signs found, and `all_outside_energy`, that of
   /// the all-outside labelling.
   struct Statistics
@@ -110,6 +113,8 @@ public:
     std::size_t number_of_handle_vertices = 0;
     std::size_t number_of_tangent_plane_vertices = 0;  ///< vertices whose side the oriented tangent planes changed
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected because F missed their points (`surface_refinement_passes`)
+    double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
+    std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
     int deepest_level = 0;
     double final_energy = 0, all_outside_energy = 0;  ///< Ising energies; all-outside lower means the model failed
   };
@@ -119,6 +124,7 @@ private:
   typedef std::array<double, 3> Xyz;
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
+  std::vector<Xyz> m_given_points;  // the points before a point smoothing changed m_points
   Settings m_settings;
   // shared by copies, as in Poisson_reconstruction_function, so that the function can be
   // passed by value (CGAL's Implicit_surface_3 stores a copy); never modified after
@@ -193,9 +199,15 @@ public:
     m_value.clear();  // operator() is then +1 until this computation completes
     m_voting_normals.clear();
     m_depth.clear();
+    if(!m_given_points.empty())  // a previous computation smoothed them
+    {
+      m_points.swap(m_given_points);
+      std::vector<Xyz>().swap(m_given_points);
+    }
     m_stats.number_of_points = m_points.size();
     CGAL::Real_timer timer;
     timer.start();
+    smooth_noisy_points();
     if(!refine())
       return false;
     m_stats.refinement_time = timer.time() - m_stats.topology_time;
@@ -317,12 +329,34 @@ public:
   const Statistics& statistics() const { return m_stats; }
   /// the parameters of the last run
   const Settings& settings() const { return m_settings; }
-  /// the input points (as doubles, sorted, exact duplicates removed)
+  /// the input points (as doubles, sorted, exact duplicates removed), after the point
+  /// smoothing if the last computation found them noisy (`point_smoothing_iterations`)
   const std::vector<std::array<double, 3> >& input_points() const { return m_points; }
   /// @}
 
 private:
   bool report(double progress) const { return !m_settings.callback || m_settings.callback(progress); }
+
+  // Noisy points tilt the planes of the small cells (point_smoothing.h says why): they are
+  // jet-smoothed before the refinement, the points as given kept for the next computation.
+  void smooth_noisy_points()
+  {
+    namespace I = ISM_reconstruction_3::internal;
+    if(m_settings.point_smoothing_iterations == 0) return;
+    std::unique_ptr<I::Point_neighbors> neighbors(new I::Point_neighbors(m_points));
+    // 20,000 neighbourhoods measure the median well and cost 20 ms
+    m_stats.neighborhood_coplanarity =
+        I::median_neighborhood_coplanarity(m_points, *neighbors, 12, m_points.size() / 20000);
+    if(m_settings.point_smoothing_noise > 0 && !(m_stats.neighborhood_coplanarity > m_settings.point_smoothing_noise))
+      return;
+    m_given_points = m_points;
+    for(int pass = 0; pass < m_settings.point_smoothing_iterations; ++pass)
+    {
+      if(pass > 0) neighbors.reset(new I::Point_neighbors(m_points));
+      m_points = I::jet_smoothed(m_points, *neighbors, unsigned(m_settings.point_smoothing_neighbors));
+      ++m_stats.number_of_point_smoothing_passes;
+    }
+  }
 
   // --- refinement (paper Program 1): a priority queue of cells by coplanarity error
   bool refine()

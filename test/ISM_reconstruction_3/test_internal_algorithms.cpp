@@ -7,6 +7,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -669,6 +670,56 @@ void misfit_leaves_test()
         "misfit leaves: ... but of more than 1.5 times the noise it is");
 }
 
+// Jet smoothing (point_smoothing.h) on a unit sphere sampled on a Fibonacci spiral: the noise
+// measure tells clean from noisy (2 % radial noise), the quadric leaves clean points where they are (a plane
+// would pull them inwards by about r^2/2), removes most of a radial noise, and a line of
+// points, on which no quadric is determined, stays a line.
+void point_smoothing_test()
+{
+  const int n = 4000;
+  std::vector<Point> clean, noisy;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> gauss(0., 0.02);
+  for(int i = 0; i < n; ++i)
+  {
+    const double z = 1 - (2 * i + 1.) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
+    clean.push_back({{ r * std::cos(phi), r * std::sin(phi), z }});
+    const double s = 1 + gauss(rng);
+    noisy.push_back({{ s * clean.back()[0], s * clean.back()[1], s * clean.back()[2] }});
+  }
+  auto radial_rms = [](const std::vector<Point>& p) {
+    double s = 0;
+    for(const Point& x : p) s += std::pow(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) - 1, 2);
+    return std::sqrt(s / double(p.size()));
+  };
+  const internal::Point_neighbors clean_neighbors(clean), noisy_neighbors(noisy);
+  const double clean_noise = internal::median_neighborhood_coplanarity(clean, clean_neighbors, 12, 1);
+  const double noisy_noise = internal::median_neighborhood_coplanarity(noisy, noisy_neighbors, 12, 3);
+  CHECK(clean_noise < 0.003, "point smoothing: a clean sphere measures no noise, got " + std::to_string(clean_noise));
+  CHECK(noisy_noise > 0.03, "point smoothing: 2 % radial noise measures above 0.03, got " + std::to_string(noisy_noise));
+  const std::vector<Point> kept = internal::jet_smoothed(clean, clean_neighbors, 24);
+  CHECK(radial_rms(kept) < 2e-4, "point smoothing: the quadric keeps clean points on the sphere, rms " +
+                                     std::to_string(radial_rms(kept)));
+  std::vector<Point> smoothed = noisy;
+  for(int pass = 0; pass < 3; ++pass)
+  {
+    const internal::Point_neighbors neighbors(smoothed);
+    smoothed = internal::jet_smoothed(smoothed, neighbors, 24);
+  }
+  CHECK(radial_rms(smoothed) < 0.4 * radial_rms(noisy), "point smoothing: 3 passes remove most of the noise, rms " +
+                                                            std::to_string(radial_rms(noisy)) + " -> " +
+                                                            std::to_string(radial_rms(smoothed)));
+  std::vector<Point> line;
+  for(int i = 0; i < 50; ++i) line.push_back({{ 0.1 * i, 0.2 * i, -0.05 * i }});
+  const internal::Point_neighbors line_neighbors(line);
+  const std::vector<Point> on_line = internal::jet_smoothed(line, line_neighbors, 24);
+  double moved = 0;
+  for(int i = 0; i < 50; ++i)
+    for(int d = 0; d < 3; ++d) moved = std::max(moved, std::abs(on_line[i][d] - line[i][d]));
+  // (up to the single-precision normal of the plane fit)
+  CHECK(moved < 1e-6, "point smoothing: points on a line stay there, moved " + std::to_string(moved));
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -705,6 +756,9 @@ int main()
 
   std::cout << "Misfit leaves" << std::endl;
   misfit_leaves_test();
+
+  std::cout << "Point smoothing" << std::endl;
+  point_smoothing_test();
 
   std::cout << "Taubin smoothing" << std::endl;
   taubin_test(grid);

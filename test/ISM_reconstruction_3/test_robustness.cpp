@@ -1046,6 +1046,12 @@ std::vector<Case> corpus_cases()
   ISM_PARAM_CASE("surface_refinement_passes_10", ANY, params::surface_refinement_passes(10));
   ISM_PARAM_CASE("surface_refinement_tolerance_0", ERROR, params::surface_refinement_tolerance(0.));
   ISM_PARAM_CASE("surface_refinement_tolerance_nan", ERROR, params::surface_refinement_tolerance(NaN));
+  ISM_PARAM_CASE("point_smoothing_iterations_-1", ERROR, params::point_smoothing_iterations(-1));
+  ISM_PARAM_CASE("point_smoothing_neighbors_3", ERROR, params::point_smoothing_neighbors(3));
+  ISM_PARAM_CASE("point_smoothing_noise_nan", ERROR, params::point_smoothing_noise(NaN));
+  // smoothing forced on clean points, with the fewest neighbours
+  ISM_PARAM_CASE("point_smoothing_always", MESH,
+                 params::point_smoothing_noise(0., params::point_smoothing_neighbors(6)));
   ISM_PARAM_CASE("surface_refinement_tolerance_1e-9", ANY,
                  params::surface_refinement_tolerance(1e-9, params::surface_refinement_passes(3)));
   ISM_PARAM_CASE("random_seed_0", ANY, params::random_seed(0));

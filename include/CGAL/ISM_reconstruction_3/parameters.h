@@ -57,6 +57,9 @@ enum thin_handle_depth_t { thin_handle_depth };
 enum tangent_plane_signs_t { tangent_plane_signs };
 enum surface_refinement_passes_t { surface_refinement_passes };
 enum surface_refinement_tolerance_t { surface_refinement_tolerance };
+enum point_smoothing_iterations_t { point_smoothing_iterations };
+enum point_smoothing_neighbors_t { point_smoothing_neighbors };
+enum point_smoothing_noise_t { point_smoothing_noise };
 enum memory_limit_t { memory_limit };
 
 } // namespace internal_np
@@ -100,6 +103,9 @@ CGAL_ISM_ADD_NAMED_PARAMETER(thin_handle_depth)
 CGAL_ISM_ADD_NAMED_PARAMETER(tangent_plane_signs)
 CGAL_ISM_ADD_NAMED_PARAMETER(surface_refinement_passes)
 CGAL_ISM_ADD_NAMED_PARAMETER(surface_refinement_tolerance)
+CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_iterations)
+CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_neighbors)
+CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_noise)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 /// \endcond
 
