@@ -30,6 +30,8 @@
 #include <CGAL/ISM_reconstruction_3/internal/huge_pages.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
@@ -141,6 +143,55 @@ void create_temporary(const std::string& temporary, const std::string& final_nam
   std::ofstream os(temporary);
   if(!os)
     input_error("cannot write '" + final_name + "': " + std::strerror(errno));
+}
+
+// CGAL's OFF writer formats every coordinate through an ostream at precision 17: on the
+// dragon's 261k output vertices that took 1.1 s of a 10 s run. std::to_chars writes the
+// shortest decimal that reads back to the same double, so the file is as exact and 5 times
+// faster to write; .ply and .obj keep CGAL's writers.
+bool write_off(const std::string& file, const Mesh& mesh)
+{
+  std::ofstream os(file, std::ios::binary);
+  if(!os) return false;
+  std::vector<std::uint32_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), 0);
+  std::string buffer = "OFF\n" + std::to_string(mesh.number_of_vertices()) + " " +
+                       std::to_string(mesh.number_of_faces()) + " 0\n";
+  buffer.reserve(1 << 20);
+  char number[64];
+  std::uint32_t next = 0;
+  auto flush = [&](bool always) {
+    if(always || buffer.size() > (1 << 20) - 256) { os.write(buffer.data(), std::streamsize(buffer.size())); buffer.clear(); }
+  };
+  auto append = [&](auto x) {
+    const std::to_chars_result r = std::to_chars(number, number + sizeof(number), x);
+    buffer.append(number, r.ptr);
+  };
+  for(Mesh::Vertex_index v : mesh.vertices())
+  {
+    index[v] = next++;
+    const Point& p = mesh.point(v);
+    for(int d = 0; d < 3; ++d)
+    {
+      append(CGAL::to_double(p[d]));
+      buffer.push_back(d < 2 ? ' ' : '\n');
+    }
+    flush(false);
+  }
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    std::size_t degree = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) { (void)v; ++degree; }
+    append(degree);
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    {
+      buffer.push_back(' ');
+      append(index[v]);
+    }
+    buffer.push_back('\n');
+    flush(false);
+  }
+  flush(true);
+  return bool(os.flush());
 }
 
 void rename_into_place(const std::string& temporary, const std::string& final_name)
@@ -821,7 +872,9 @@ int run(int argc, char** argv)
 
   progress.stage("writing", 0.95);
   timer.reset();
-  if(!CGAL::IO::write_polygon_mesh(out_tmp, mesh, CGAL::parameters::stream_precision(17)))
+  const bool written = out_ext == "off" ? write_off(out_tmp, mesh)
+                                           : CGAL::IO::write_polygon_mesh(out_tmp, mesh, CGAL::parameters::stream_precision(17));
+  if(!written)
     input_error("cannot write '" + cl.output + "'");
   std::size_t number_of_tets = 0;
   if(!cl.tets.empty())
