@@ -8,11 +8,7 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_NORMAL_ORIENTATION_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_NORMAL_ORIENTATION_H
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/property_map.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -134,35 +130,19 @@ inline void propagate_orientations(const std::vector<std::array<double, 3> >& po
                                    std::vector<Orientation_test>& tests, unsigned int k,
                                    double min_weak_relative_difference)
 {
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef K::Point_3 P;
-  typedef CGAL::Search_traits_3<K> Base_traits;
-  typedef typename CGAL::Pointer_property_map<P>::type Point_pmap;
-  typedef CGAL::Search_traits_adapter<std::uint32_t, Point_pmap, Base_traits> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef typename Search::Tree Tree;
-  typedef typename Search::Distance Distance;
-
   const std::size_t size = points.size();
   std::vector<std::uint32_t> uncertain;
   for(std::size_t i = 0; i < size; ++i)
     if(!tests[i].confident) uncertain.push_back(std::uint32_t(i));
   if(uncertain.empty()) return;
 
-  std::vector<P> pts;
-  pts.reserve(size);
-  for(const auto& p : points) pts.push_back(P(p[0], p[1], p[2]));
-  std::vector<std::uint32_t> ids(size);
-  for(std::size_t i = 0; i < size; ++i) ids[i] = std::uint32_t(i);
-  const Point_pmap pmap = CGAL::make_property_map(pts);
-  Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(pmap));
-  tree.build();
+  const Point_neighbors neighbors(points);
   const unsigned int kk = unsigned((std::min<std::size_t>)(k + 1, size));
   std::vector<std::vector<std::uint32_t> > knn(uncertain.size());
   auto query = [&](std::size_t u) {
-    Search search(tree, pts[uncertain[u]], kk, 0, true, Distance(pmap));
-    for(const auto& item : search)
-      if(item.first != uncertain[u]) knn[u].push_back(item.first);
+    neighbors.for_nearest(points[uncertain[u]], kk, [&](std::uint32_t i, double) {
+      if(i != uncertain[u]) knn[u].push_back(i);
+    });
   };
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, uncertain.size(), 64),
