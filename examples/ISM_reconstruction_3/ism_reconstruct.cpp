@@ -147,8 +147,8 @@ void create_temporary(const std::string& temporary, const std::string& final_nam
 
 // CGAL's OFF writer formats every coordinate through an ostream at precision 17: on the
 // dragon's 261k output vertices that took 1.1 s of a 10 s run. std::to_chars writes the
-// shortest decimal that reads back to the same double, so the file is as exact and 5 times
-// faster to write; .ply and .obj keep CGAL's writers.
+// shortest decimal that reads back to the same double, so the file is as exact and written
+// in 0.13-0.19 s; .ply and .obj keep CGAL's writers.
 bool write_off(const std::string& file, const Mesh& mesh)
 {
   std::ofstream os(file, std::ios::binary);
@@ -159,9 +159,11 @@ bool write_off(const std::string& file, const Mesh& mesh)
   buffer.reserve(1 << 20);
   char number[64];
   std::uint32_t next = 0;
-  auto flush = [&](bool always) {
-    if(always || buffer.size() > (1 << 20) - 256) { os.write(buffer.data(), std::streamsize(buffer.size())); buffer.clear(); }
+  auto flush = [&]() {
+    os.write(buffer.data(), std::streamsize(buffer.size()));
+    buffer.clear();
   };
+  auto flush_if_full = [&]() { if(buffer.size() > (1 << 20) - 256) flush(); };
   auto append = [&](auto x) {
     const std::to_chars_result r = std::to_chars(number, number + sizeof(number), x);
     buffer.append(number, r.ptr);
@@ -175,22 +177,20 @@ bool write_off(const std::string& file, const Mesh& mesh)
       append(CGAL::to_double(p[d]));
       buffer.push_back(d < 2 ? ' ' : '\n');
     }
-    flush(false);
+    flush_if_full();
   }
   for(Mesh::Face_index f : mesh.faces())
   {
-    std::size_t degree = 0;
-    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) { (void)v; ++degree; }
-    append(degree);
+    append(std::size_t(CGAL::degree(f, mesh)));
     for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
     {
       buffer.push_back(' ');
       append(index[v]);
     }
     buffer.push_back('\n');
-    flush(false);
+    flush_if_full();
   }
-  flush(true);
+  flush();
   return bool(os.flush());
 }
 

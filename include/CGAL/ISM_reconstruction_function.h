@@ -125,6 +125,9 @@ private:
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
   std::vector<Xyz> m_given_points;  // the points before a point smoothing changed m_points
+  // the k nearest points of m_points, from the noise measure to the end of the distance stage
+  // (shared, as m_tr, so that the function stays copyable)
+  std::shared_ptr<const ISM_reconstruction_3::internal::Point_neighbors> m_point_neighbors;
   Settings m_settings;
   // shared by copies, as in Poisson_reconstruction_function, so that the function can be
   // passed by value (CGAL's Implicit_surface_3 stores a copy); never modified after
@@ -199,6 +202,7 @@ public:
     m_value.clear();  // operator() is then +1 until this computation completes
     m_voting_normals.clear();
     m_depth.clear();
+    m_point_neighbors.reset();  // of the points of a previous computation
     if(!m_given_points.empty())  // a previous computation smoothed them
     {
       m_points.swap(m_given_points);
@@ -249,7 +253,8 @@ public:
       if(m_tr->is_leaf(c) && ISM_reconstruction_3::internal::is_crossed(m_tr->vertices(c), m_sign))
         for(int l = 0; l < 4; ++l) near_surface[m_tr->vertex(c, l)] = 1;
     // one kd-tree of the points serves the distances and the tangent planes
-    const ISM_reconstruction_3::internal::Point_neighbors neighbors(m_points);
+    if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
+    const ISM_reconstruction_3::internal::Point_neighbors& neighbors = *m_point_neighbors;
     CGAL_ISM_TIMER_MARK(step, "kd-tree");
     m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign,
                                                                   m_settings.distance_estimate, near_surface);
@@ -261,6 +266,7 @@ public:
     if(m_settings.surface_refinement_passes > 0) refine_surface_leaves(neighbors, boundary);
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
+    m_point_neighbors.reset();
     CGAL_ISM_TIMER_MARK(step, "surface refinement");
     m_stats.distance_time = timer.time();
     find_inner_point();
@@ -343,19 +349,20 @@ private:
   {
     namespace I = ISM_reconstruction_3::internal;
     if(m_settings.point_smoothing_iterations == 0) return;
-    std::unique_ptr<I::Point_neighbors> neighbors(new I::Point_neighbors(m_points));
+    m_point_neighbors.reset(new I::Point_neighbors(m_points));
     // 20,000 neighbourhoods measure the median well and cost 20 ms
     m_stats.neighborhood_coplanarity =
-        I::median_neighborhood_coplanarity(m_points, *neighbors, 12, m_points.size() / 20000);
+        I::median_neighborhood_coplanarity(m_points, *m_point_neighbors, 12, m_points.size() / 20000);
     if(m_settings.point_smoothing_noise > 0 && !(m_stats.neighborhood_coplanarity > m_settings.point_smoothing_noise))
-      return;
+      return;  // the tree then serves the distance stage
     m_given_points = m_points;
     for(int pass = 0; pass < m_settings.point_smoothing_iterations; ++pass)
     {
-      if(pass > 0) neighbors.reset(new I::Point_neighbors(m_points));
-      m_points = I::jet_smoothed(m_points, *neighbors, unsigned(m_settings.point_smoothing_neighbors));
+      if(pass > 0) m_point_neighbors.reset(new I::Point_neighbors(m_points));
+      m_points = I::jet_smoothed(m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors));
       ++m_stats.number_of_point_smoothing_passes;
     }
+    m_point_neighbors.reset();  // of the points before the last pass
   }
 
   // --- refinement (paper Program 1): a priority queue of cells by coplanarity error
