@@ -19,6 +19,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/topology_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
+#include <CGAL/ISM_reconstruction_3/internal/leaf_vertices.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
@@ -122,6 +123,7 @@ public:
 
 private:
   typedef std::array<double, 3> Xyz;
+  typedef ISM_reconstruction_3::internal::Leaf_vertices<Triangulation> Leaf_vertices;
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
   std::vector<Xyz> m_given_points;  // the points before a point smoothing changed m_points
@@ -226,21 +228,16 @@ public:
     final_schedule.number_of_sweeps = m_settings.number_of_sweeps;
     final_schedule.final_temperature =
         final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
-    estimate_topology(final_schedule);
-    // the triangulation is final: its box boundary serves the islands and the handles
+    estimate_topology(final_schedule, true);
+    // the triangulation is final: its box boundary and its leaves serve the islands and
+    // the handles
     const std::vector<char> boundary = ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr);
+    ISM_reconstruction_3::internal::Leaf_vertices<Triangulation> leaves(*m_tr);
     if(m_settings.minimum_island_fraction > 0)
       m_stats.number_of_flipped_islands =
-          ISM_reconstruction_3::internal::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
+          ISM_reconstruction_3::internal::remove_islands(leaves, m_sign, boundary, m_settings.minimum_island_fraction);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     m_stats.topology_time += timer.time();
-    // the per-cell point ranges and fits only serve refinement and topology: freeing them
-    // lowers the peak, reached later while the surface is extracted (32 bytes per cell)
-    m_range = decltype(m_range)();
-    m_fit = decltype(m_fit)();
-    // without this, freeing these 64 MB lowered the resident memory by 2 MB and the surface
-    // extraction set a new peak above the topology's (dragon: 228 -> 212 MB)
-    ISM_reconstruction_3::internal::return_free_heap_memory();
     if(!report(0.9)) return false;
 
     timer.reset();
@@ -249,9 +246,9 @@ public:
     step.start();
 #endif
     std::vector<char> near_surface(m_sign.size(), 0);
-    for(Cell_index c = 0; c < Cell_index(m_tr->number_of_cells()); ++c)
-      if(m_tr->is_leaf(c) && ISM_reconstruction_3::internal::is_crossed(m_tr->vertices(c), m_sign))
-        for(int l = 0; l < 4; ++l) near_surface[m_tr->vertex(c, l)] = 1;
+    for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
+      if(ISM_reconstruction_3::internal::is_crossed(leaves.vertices(Cell_index(c)), m_sign))
+        for(int l = 0; l < 4; ++l) near_surface[leaves.vertex(Cell_index(c), l)] = 1;
     // one kd-tree of the points serves the distances and the tangent planes
     if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
     const ISM_reconstruction_3::internal::Point_neighbors& neighbors = *m_point_neighbors;
@@ -259,11 +256,11 @@ public:
     m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign,
                                                                   m_settings.distance_estimate, near_surface);
     CGAL_ISM_TIMER_MARK(step, "distances");
-    if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary, m_value);
+    if(m_settings.thin_handle_depth > 0) remove_thin_handles(leaves, boundary, m_value);
     CGAL_ISM_TIMER_MARK(step, "thin handles");
-    if(m_settings.tangent_plane_signs) sign_by_tangent_planes(boundary, neighbors);
+    if(m_settings.tangent_plane_signs) sign_by_tangent_planes(leaves, boundary, neighbors);
     CGAL_ISM_TIMER_MARK(step, "tangent planes");
-    if(m_settings.surface_refinement_passes > 0) refine_surface_leaves(neighbors, boundary);
+    if(m_settings.surface_refinement_passes > 0) refine_surface_leaves(neighbors, boundary, leaves);
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
     m_point_neighbors.reset();
@@ -525,15 +522,24 @@ private:
   }
 
   // paper 4.2: minimise the Ising energy over the leaf mesh
-  void estimate_topology(const ISM_reconstruction_3::internal::Annealing_schedule& schedule)
+  // `last`: the refinement is over, and the per-cell point ranges and fits, which only
+  // serve it and the topology, are freed as soon as the leaves' proposals are read
+  void estimate_topology(const ISM_reconstruction_3::internal::Annealing_schedule& schedule, bool last = false)
   {
     namespace I = ISM_reconstruction_3::internal;
     sync_vertices();
     m_sign.resize(m_tr->number_of_vertices(), 1);
     I::Topology_input in;
     in.empty_cell_error = m_settings.empty_cell_error;
-    I::Coupling_graph graph = I::build_coupling_graph(*m_tr, m_vertex_xyz, m_fit,
-        [&](Cell_index c) { return count(c); }, in);
+    I::Leaf_proposals proposals = I::propose_signs(*m_tr, m_vertex_xyz, m_fit, [&](Cell_index c) { return count(c); });
+    if(last)
+    {
+      m_range = decltype(m_range)();
+      m_fit = decltype(m_fit)();
+      // without this, freeing these 64 MB lowered the resident memory by 2 MB
+      I::return_free_heap_memory();
+    }
+    I::Coupling_graph graph = I::build_coupling_graph(*m_tr, std::move(proposals), in);
     m_stats.all_outside_energy = I::ising_energy(graph, std::vector<signed char>(m_sign.size(), 1));
     std::vector<char> clamped;
     const std::vector<char> boundary = I::box_boundary_vertices(*m_tr);
@@ -560,16 +566,16 @@ private:
   // after the distances: the depth of a vertex decides whether the loop it closes is thin
   // `depth`: the values whose magnitude says how deep a vertex is (the handles are judged on
   // the distances of paper 4.3 also after the tangent planes changed some values)
-  void remove_thin_handles(const std::vector<char>& boundary, std::vector<double>& depth)
+  void remove_thin_handles(const Leaf_vertices& leaves, const std::vector<char>& boundary, std::vector<double>& depth)
   {
     namespace I = ISM_reconstruction_3::internal;
     const std::size_t changed =
-        I::remove_thin_handles(*m_tr, m_vertex_xyz, boundary, m_settings.thin_handle_depth, m_sign, depth);
+        I::remove_thin_handles(leaves, m_vertex_xyz, boundary, m_settings.thin_handle_depth, m_sign, depth);
     m_stats.number_of_handle_vertices += changed;
     if(changed > 0 && m_settings.minimum_island_fraction > 0)
       // vertices that changed side can leave a speck of one sign (bunny with 0.5 % noise,
       // homer: a second component); taking a small ball out of a region leaves its loops
-      m_stats.number_of_flipped_islands += I::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
+      m_stats.number_of_flipped_islands += I::remove_islands(leaves, m_sign, boundary, m_settings.minimum_island_fraction);
     for(std::size_t v = 0; v < m_sign.size(); ++v) m_value[v] = m_sign[v] * std::abs(m_value[v]);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
   }
@@ -578,37 +584,38 @@ private:
   // normals are oriented by this function as ism_orient_normals() does. Measured on bunny00
   // at 36k points, 13 samplings: in/out 99.64-99.70 % -> 99.76-99.80 %, queries farther
   // than 1 % of the diagonal on the wrong side 0-3 -> 0, mean distance 0.075 -> 0.051 %.
-  void sign_by_tangent_planes(const std::vector<char>& boundary, const ISM_reconstruction_3::internal::Point_neighbors& neighbors)
+  void sign_by_tangent_planes(const Leaf_vertices& leaves, const std::vector<char>& boundary,
+                              const ISM_reconstruction_3::internal::Point_neighbors& neighbors)
   {
     namespace I = ISM_reconstruction_3::internal;
 #ifdef CGAL_ISM_TIMER
     CGAL::Real_timer step;
     step.start();
 #endif
-    const double radius = 0.75 * I::median_surface_leaf_size(*m_tr, m_vertex_xyz, m_sign);
+    const double radius = 0.75 * I::median_surface_leaf_size(leaves, m_vertex_xyz, m_sign);
     // the handles are judged on the distances of paper 4.3 (on the tangent-plane distances
     // they left the bunny a handle on 1 of 13 samplings)
     m_depth = m_value;
     m_stats.number_of_tangent_plane_vertices = vote_by_tangent_planes(neighbors, boundary, 0, radius);
     CGAL_ISM_TIMER_MARK(step, "tangent planes: votes");
     if(m_stats.number_of_tangent_plane_vertices == 0) return;
-    remove_islands_and_thin_handles(boundary);
+    remove_islands_and_thin_handles(leaves, boundary);
     CGAL_ISM_TIMER_MARK(step, "tangent planes: islands and thin handles");
   }
 
   // After vertices changed side: islands, then the thin handles, judged on m_depth; the
   // values and the depths follow the signs.
-  void remove_islands_and_thin_handles(const std::vector<char>& boundary)
+  void remove_islands_and_thin_handles(const Leaf_vertices& leaves, const std::vector<char>& boundary)
   {
     if(m_settings.minimum_island_fraction > 0)
       m_stats.number_of_flipped_islands +=
-          ISM_reconstruction_3::internal::remove_islands(*m_tr, m_sign, boundary, m_settings.minimum_island_fraction);
+          ISM_reconstruction_3::internal::remove_islands(leaves, m_sign, boundary, m_settings.minimum_island_fraction);
     for(std::size_t v = 0; v < m_sign.size(); ++v)
     {
       m_value[v] = m_sign[v] * std::abs(m_value[v]);
       m_depth[v] = m_sign[v] * std::abs(m_depth[v]);
     }
-    if(m_settings.thin_handle_depth > 0) remove_thin_handles(boundary, m_depth);
+    if(m_settings.thin_handle_depth > 0) remove_thin_handles(leaves, boundary, m_depth);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
   }
 
@@ -693,13 +700,14 @@ private:
   // points, the tangent planes give its side. Measured on bunny00 at 36k points, 13
   // samplings: mean distance 0.055-0.059 -> 0.037-0.039 % of the diagonal, far in/out errors
   // on 3 -> 1 sampling; at 0.25 % noise 2 of 3 -> 0 of 3.
+  // `leaves`: those of the triangulation before, after it on return
   void refine_surface_leaves(const ISM_reconstruction_3::internal::Point_neighbors& neighbors,
-                             const std::vector<char>& boundary)
+                             const std::vector<char>& boundary, Leaf_vertices& leaves)
   {
     namespace I = ISM_reconstruction_3::internal;
     Triangulation& tr = *m_tr;
     // the voting radius of the tangent planes before the leaves shrink
-    const double radius = 0.75 * I::median_surface_leaf_size(tr, m_vertex_xyz, m_sign);
+    const double radius = 0.75 * I::median_surface_leaf_size(leaves, m_vertex_xyz, m_sign);
     I::Memory_guard memory_guard(m_settings.memory_limit, m_points.size(), m_settings.maximum_depth);
     std::vector<char> fixed = boundary;
     const std::vector<std::uint32_t> order = I::morton_order(m_points);
@@ -746,7 +754,8 @@ private:
     }
     if(m_stats.number_of_misfit_leaves == 0) return;
     // the new sides can close small loops (bunny with 0.25 % noise: genus 1 on 2 of 3 without)
-    remove_islands_and_thin_handles(I::box_boundary_vertices(tr));
+    leaves.assign(tr);
+    remove_islands_and_thin_handles(leaves, I::box_boundary_vertices(tr));
     CGAL_ISM_TIMER_MARK(step, "surface refinement: islands and thin handles");
     m_stats.number_of_leaves = tr.number_of_leaves();
     m_stats.number_of_vertices = tr.number_of_vertices();

@@ -196,13 +196,7 @@ std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::
   // in memory, unlike vertex by vertex)
   Disjoint_sets sets(n);
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
-    if(tr.is_leaf(c))
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j)
-        {
-          const std::uint32_t a = std::uint32_t(tr.vertex(c, i)), b = std::uint32_t(tr.vertex(c, j));
-          if(deep[a] && deep[b] && signs[a] == signs[b]) sets.unite(a, b);
-        }
+    if(tr.is_leaf(c)) unite_same_sign(tr.vertices(c), signs, [&](std::uint32_t v) { return deep[v] != 0; }, sets);
   const std::vector<signed char> before = signs;
   open_shallow_loops(tr, offsets, leaves, deep, 1, sets, signs, values);
   // the outside sweep only moved shallow vertices: the deep ones inside keep their components

@@ -31,17 +31,41 @@ struct Topology_input
   double empty_cell_error = 0.05;  // eps_empty as a fraction of [eps_min, eps_max]
 };
 
-// The edge weights of paper 4.2 on the leaf mesh:
-//   H_e = - sum over leaves s around e of S^s_v0 S^s_v1 (eps_max - eps_s) / (eps_max - eps_min),
-// where S^s_v is the side of v with respect to the plane of s; an empty leaf proposes the
-// same sign for all its vertices with eps_s = eps_empty. Built per vertex from the leaves
-// around it, so each edge's weight is summed in one place without a global hash.
+// Calls f(begin, end) on the chunks of [0, size) of `chunk_size` indices, in parallel with
+// TBB; the chunks are fixed, so what f computes per chunk does not depend on the threads.
+constexpr std::size_t chunk_size = 4096;
+template <class F>
+void for_each_chunk(std::size_t size, const F& f)
+{
+  const std::size_t number_of_chunks = (size + chunk_size - 1) / chunk_size;
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(std::size_t(0), number_of_chunks,
+                    [&](std::size_t k) { f(k * chunk_size, (std::min)(size, (k + 1) * chunk_size)); });
+#else
+  for(std::size_t k = 0; k < number_of_chunks; ++k) f(k * chunk_size, (std::min)(size, (k + 1) * chunk_size));
+#endif
+}
+
+// What each leaf proposes (paper 4.2): the side of each of its vertices with respect to its
+// plane, or that it is empty, and the coplanarity error that weighs its proposal. This is
+// all the edge weights need from the fits and the point counts, 5 bytes a cell against their
+// 32: the last topology pass frees those before it builds the graph (dragon, 437k points:
+// the peak of the whole run, 225 -> 199 MB).
+struct Leaf_proposals
+{
+  enum { empty_bit = 16 };
+  // per cell: bit l set when vertex l is on the negative side; empty_bit for an empty leaf
+  std::vector<unsigned char> code;
+  std::vector<float> coplanarity_error;  // per cell with points
+  double eps_min = 0, eps_max = 1;       // over the leaves with points
+};
+
 template <class Triangulation, class FitArray, class CountFunction>
-Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
-                                    const FitArray& fits, CountFunction count,
-                                    const Topology_input& in)
+Leaf_proposals propose_signs(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
+                             const FitArray& fits, CountFunction count)
 {
   typedef typename Triangulation::Cell_index Cell_index;
+  Leaf_proposals p;
   double eps_min = HUGE_VAL, eps_max = -HUGE_VAL;
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
     if(tr.is_leaf(c) && count(c) > 0)
@@ -49,41 +73,47 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
       eps_min = (std::min)(eps_min, double(fits[c].coplanarity_error));
       eps_max = (std::max)(eps_max, double(fits[c].coplanarity_error));
     }
-  if(!(eps_max >= eps_min)) { eps_min = 0; eps_max = 1; }
-  const double range = eps_max > eps_min ? eps_max - eps_min : 1.;
-  const double w_empty = 1. - in.empty_cell_error;
-  auto weight = [&](Cell_index c) {
-    return eps_max > eps_min ? (eps_max - fits[c].coplanarity_error) / range : 1.;
-  };
-
-  const std::size_t n = tr.number_of_vertices();
+  if(eps_max >= eps_min) { p.eps_min = eps_min; p.eps_max = eps_max; }
   const std::size_t number_of_cells = tr.number_of_cells();
-  const std::size_t chunk = 4096;
-  auto for_each_chunk = [&](std::size_t size, const auto& f) {
-    const std::size_t number_of_chunks = (size + chunk - 1) / chunk;
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::parallel_for(std::size_t(0), number_of_chunks, [&](std::size_t k) { f(k * chunk, (std::min)(size, (k + 1) * chunk)); });
-#else
-    for(std::size_t k = 0; k < number_of_chunks; ++k) f(k * chunk, (std::min)(size, (k + 1) * chunk));
-#endif
-  };
-  // The sides of its 4 vertices (bit l set: vertex l on the negative side) and
-  // emptiness (bit 4) of every leaf, computed once in cell order: each leaf is met from
-  // each of its 4 vertices, which would otherwise read its plane, its point count and the
-  // vertex positions again at random. One byte per cell.
-  enum { empty_bit = 16 };
-  std::vector<unsigned char> code(number_of_cells, 0);
+  p.code.assign(number_of_cells, 0);
+  p.coplanarity_error.assign(number_of_cells, 0.f);
+  // computed once in cell order: each leaf is met from each of its 4 vertices, which would
+  // otherwise read its plane, its point count and the vertex positions again at random
   for_each_chunk(number_of_cells, [&](std::size_t b, std::size_t e) {
     for(std::size_t c = b; c < e; ++c)
     {
       if(!tr.is_leaf(Cell_index(c))) continue;
-      if(count(Cell_index(c)) == 0) { code[c] = empty_bit; continue; }
+      if(count(Cell_index(c)) == 0) { p.code[c] = Leaf_proposals::empty_bit; continue; }
       unsigned char bits = 0;
       for(int l = 0; l < 4; ++l)
         if(fits[Cell_index(c)].side(xyz[tr.vertex(Cell_index(c), l)]) < 0) bits |= (unsigned char)(1 << l);
-      code[c] = bits;
+      p.code[c] = bits;
+      p.coplanarity_error[c] = fits[Cell_index(c)].coplanarity_error;
     }
   });
+  return p;
+}
+
+// The edge weights of paper 4.2 on the leaf mesh:
+//   H_e = - sum over leaves s around e of S^s_v0 S^s_v1 (eps_max - eps_s) / (eps_max - eps_min),
+// where S^s_v is the side of v with respect to the plane of s; an empty leaf proposes the
+// same sign for all its vertices with eps_s = eps_empty. Built per vertex from the leaves
+// around it, so each edge's weight is summed in one place without a global hash.
+// `proposals` are freed once read.
+template <class Triangulation>
+Coupling_graph build_coupling_graph(const Triangulation& tr, Leaf_proposals&& proposals, const Topology_input& in)
+{
+  typedef typename Triangulation::Cell_index Cell_index;
+  const double eps_min = proposals.eps_min, eps_max = proposals.eps_max;
+  const double range = eps_max > eps_min ? eps_max - eps_min : 1.;
+  const double w_empty = 1. - in.empty_cell_error;
+  const std::vector<float>& error = proposals.coplanarity_error;
+  auto weight = [&](Cell_index c) {
+    return eps_max > eps_min ? (eps_max - error[c]) / range : 1.;
+  };
+  const std::vector<unsigned char>& code = proposals.code;
+  enum { empty_bit = Leaf_proposals::empty_bit };
+  const std::size_t n = tr.number_of_vertices();
 
   std::vector<std::size_t> offsets;
   std::vector<Cell_index> cells;
@@ -123,9 +153,9 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
     std::vector<int> adjacency;
     std::vector<float> weights;
   };
-  std::vector<Rows> parts((n + chunk - 1) / chunk);
+  std::vector<Rows> parts((n + chunk_size - 1) / chunk_size);
   for_each_chunk(n, [&](std::size_t b, std::size_t e) {
-    Rows& part = parts[b / chunk];
+    Rows& part = parts[b / chunk_size];
     std::vector<int> neighbors;
     std::vector<double> row;
     for(std::size_t u = b; u < e; ++u)
@@ -141,7 +171,7 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
   });
   std::vector<std::size_t>().swap(offsets);
   std::vector<Cell_index>().swap(cells);
-  std::vector<unsigned char>().swap(code);
+  proposals = Leaf_proposals();
   Coupling_graph g;
   g.offsets.assign(n + 1, 0);
   std::size_t total = 0;
@@ -159,6 +189,13 @@ Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<s
   // the parts are small heap blocks: returned, they do not add to the annealing's peak
   return_free_heap_memory();
   return g;
+}
+
+template <class Triangulation, class FitArray, class CountFunction>
+Coupling_graph build_coupling_graph(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
+                                    const FitArray& fits, CountFunction count, const Topology_input& in)
+{
+  return build_coupling_graph(tr, propose_signs(tr, xyz, fits, count), in);
 }
 
 // The vertices on the boundary of the box: those of leaf faces without a neighbour.
@@ -192,13 +229,7 @@ std::size_t remove_islands(const Triangulation& tr, std::vector<signed char>& si
   // needs, took 0.45 s of the dragon's 437k points)
   Disjoint_sets clusters(n);
   for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
-    if(tr.is_leaf(c))
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j)
-        {
-          const std::uint32_t a = std::uint32_t(tr.vertex(c, i)), b = std::uint32_t(tr.vertex(c, j));
-          if(signs[a] == signs[b]) clusters.unite(a, b);
-        }
+    if(tr.is_leaf(c)) unite_same_sign(tr.vertices(c), signs, [](std::uint32_t) { return true; }, clusters);
   // per root: size and whether the cluster reaches the box boundary
   std::vector<std::uint32_t> root(n), size(n, 0);
   std::vector<char> touches_boundary(n, 0);
