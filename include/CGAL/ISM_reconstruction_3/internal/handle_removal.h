@@ -67,21 +67,31 @@ void leaves_around_vertices(const Triangulation& tr, const std::vector<char>& sk
 
 // Whether adding v to the set X (`in_set`, its components in `sets`) closes a loop: v's
 // link meets X in more pieces (connected by link edges) than X has components there.
+// `slot` maps a vertex to its index in `link` and is -1 elsewhere, as it is left (a lookup
+// per link vertex instead of a search of `link`: the search took a third of the pass).
 template <class Triangulation>
 bool closes_loop(const Triangulation& tr, const std::vector<std::uint32_t>& offsets,
                  const std::vector<std::uint32_t>& leaves, const std::vector<char>& in_set, Disjoint_sets& sets,
-                 std::uint32_t v, std::vector<std::uint32_t>& link, Disjoint_sets& pieces_of_link,
-                 std::vector<std::uint32_t>& roots)
+                 std::uint32_t v, std::vector<std::uint32_t>& link, std::vector<std::int32_t>& slot,
+                 Disjoint_sets& pieces_of_link, std::vector<std::uint32_t>& roots)
 {
   link.clear();
   for(std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
     for(int l = 0; l < 4; ++l)
     {
       const std::uint32_t w = std::uint32_t(tr.vertex(leaves[i], l));
-      if(w != v && in_set[w] && std::find(link.begin(), link.end(), w) == link.end()) link.push_back(w);
+      if(w != v && in_set[w] && slot[w] < 0)
+      {
+        slot[w] = std::int32_t(link.size());
+        link.push_back(w);
+      }
     }
-  if(link.size() < 2) return false;
-  auto index = [&](std::uint32_t w) { return std::uint32_t(std::find(link.begin(), link.end(), w) - link.begin()); };
+  auto clear_slots = [&] { for(std::uint32_t w : link) slot[w] = -1; };
+  if(link.size() < 2)
+  {
+    clear_slots();
+    return false;
+  }
   pieces_of_link.reset(link.size());
   // the link's edges: the pairs of other vertices of a leaf around v
   for(std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i)
@@ -95,8 +105,10 @@ bool closes_loop(const Triangulation& tr, const std::vector<std::uint32_t>& offs
     }
     for(int a = 0; a < 3; ++a)
       for(int b = a + 1; b < 3; ++b)
-        if(in_set[other[a]] && in_set[other[b]]) pieces_of_link.unite(index(other[a]), index(other[b]));
+        if(in_set[other[a]] && in_set[other[b]])
+          pieces_of_link.unite(std::uint32_t(slot[other[a]]), std::uint32_t(slot[other[b]]));
   }
+  clear_slots();
   std::size_t pieces = 0;
   roots.clear();
   for(std::uint32_t j = 0; j < link.size(); ++j)
@@ -140,11 +152,12 @@ void open_shallow_loops(const Triangulation& tr, const std::vector<std::uint32_t
     return da != db ? da > db : a < b;  // ties by index: deterministic
   });
   std::vector<std::uint32_t> link;   // the vertices of v's link in X
+  std::vector<std::int32_t> slot(n, -1);
   Disjoint_sets pieces_of_link(0);   // over the indices into `link`
   std::vector<std::uint32_t> roots;
   for(std::uint32_t v : order)
   {
-    if(closes_loop(tr, offsets, leaves, in_set, sets, v, link, pieces_of_link, roots))
+    if(closes_loop(tr, offsets, leaves, in_set, sets, v, link, slot, pieces_of_link, roots))
     {
       signs[v] = static_cast<signed char>(-side);
       values[v] = -values[v];
