@@ -264,6 +264,7 @@ public:
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
     m_point_neighbors.reset();
+    std::vector<Cell_index>().swap(m_leaf_of_point);
     CGAL_ISM_TIMER_MARK(step, "surface refinement");
     m_stats.distance_time = timer.time();
     find_inner_point();
@@ -384,6 +385,8 @@ private:
     // each cell owns the contiguous range [m_range[c][0], m_range[c][1]) of m_cell_points
     m_cell_points.clear();
     m_cell_points.reserve(m_points.size());
+    m_cell_point_index.clear();
+    m_cell_point_index.reserve(m_points.size());
     m_range.assign(6, {{0, 0}});
     m_fit.assign(6, I::Plane_fit());
     {
@@ -396,7 +399,11 @@ private:
       for(int r = 0; r < 6; ++r)
       {
         m_range[r][0] = std::uint32_t(m_cell_points.size());
-        for(std::uint32_t i : by_root[r]) m_cell_points.push_back(m_points[i]);
+        for(std::uint32_t i : by_root[r])
+        {
+          m_cell_points.push_back(m_points[i]);
+          m_cell_point_index.push_back(i);
+        }
         m_range[r][1] = std::uint32_t(m_cell_points.size());
       }
     }
@@ -428,9 +435,8 @@ private:
         m_range.resize(tr.number_of_cells());
         m_fit.resize(tr.number_of_cells());
       }
-      const auto b = m_cell_points.begin() + m_range[p][0], e = m_cell_points.begin() + m_range[p][1];
-      const auto mid = std::partition(b, e, [&](const Xyz& x) { return tr.child_side(p, Point(x[0], x[1], x[2])) == 0; });
-      const std::uint32_t m = std::uint32_t(mid - m_cell_points.begin());
+      const std::uint32_t m = partition_cell_points(
+          m_range[p][0], m_range[p][1], [&](const Xyz& x) { return tr.child_side(p, Point(x[0], x[1], x[2])) == 0; });
       m_range[c0] = {{ m_range[p][0], m }};
       m_range[c1] = {{ m, m_range[p][1] }};
       fit(c0, p);
@@ -492,8 +498,44 @@ private:
         if(!report(0.7 * (std::min)(1., guess))) return false;
       }
     }
+    // the leaf of each point, for the point location of the distance stage (a descent of
+    // 24 levels per point, 0.5 s of CPU on the dragon, with a walk)
+    m_leaf_of_point.assign(m_points.size(), -1);
+    for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+      if(tr.is_leaf(c))
+        for(std::uint32_t i = m_range[c][0]; i < m_range[c][1]; ++i) m_leaf_of_point[m_cell_point_index[i]] = c;
     std::vector<Xyz>().swap(m_cell_points);
+    std::vector<std::uint32_t>().swap(m_cell_point_index);
     return true;
+  }
+
+  // Moves the cell points in [b, e) for which `first_child` holds before the others, with
+  // their indices; returns the end of the first ones. The swaps of libstdc++'s
+  // std::partition, so that the points of each cell, and the sums of their fits, keep the
+  // order they had before the indices moved along.
+  template <class Predicate>
+  std::uint32_t partition_cell_points(std::uint32_t b, std::uint32_t e, const Predicate& first_child)
+  {
+    for(;;)
+    {
+      while(b != e && first_child(m_cell_points[b])) ++b;
+      if(b == e) return b;
+      --e;
+      while(b != e && !first_child(m_cell_points[e])) --e;
+      if(b == e) return b;
+      std::swap(m_cell_points[b], m_cell_points[e]);
+      std::swap(m_cell_point_index[b], m_cell_point_index[e]);
+      ++b;
+    }
+  }
+
+  // The leaf holding m_points[i] (below the one of the refinement if the surface
+  // refinement bisected it since).
+  Cell_index leaf_of_point(std::uint32_t i) const
+  {
+    Cell_index c = m_leaf_of_point[i];
+    while(!m_tr->is_leaf(c)) c = m_tr->child(c, m_tr->child_side(c, point_of(i)));
+    return c;
   }
 
   std::size_t count(Cell_index c) const { return m_range[c][1] - m_range[c][0]; }
@@ -667,7 +709,7 @@ private:
     std::vector<I::Orientation_test> tests(n);
     std::vector<char> outside(n, 0);
     I::for_each_index(n, [&](std::size_t j) {
-      tests[j] = I::ism_orientation_of(*this, xyz[j], normals[j]);
+      tests[j] = I::ism_orientation_of(*this, xyz[j], normals[j], leaf_of_point(which[j]));
       if(!tests[j].confident) outside[j] = (*this)(Point(xyz[j][0], xyz[j][1], xyz[j][2])) > 0;
     });
     I::propagate_orientations(xyz, normals, tests, 18, 0.5);
@@ -717,7 +759,6 @@ private:
     const double radius = 0.75 * I::median_surface_leaf_size(leaves, m_vertex_xyz, m_sign);
     I::Memory_guard memory_guard(m_settings.memory_limit, m_points.size(), m_settings.maximum_depth);
     std::vector<char> fixed = boundary;
-    const std::vector<std::uint32_t> order = I::morton_order(m_points);
     if(m_depth.size() != m_value.size()) m_depth = m_value;  // no tangent planes
 #ifdef CGAL_ISM_TIMER
     CGAL::Real_timer step;
@@ -728,7 +769,8 @@ private:
       // 3 times the median miss: a bend that a leaf cuts misses the points by more than the
       // noise (0.25 % noise refined 13k leaves of 63k at tolerance 0.05 without it, 1.5k with)
       const std::vector<Cell_index> misfit = I::misfit_leaves(
-          tr, m_vertex_xyz, m_points, order, [&](Cell_index c, const Xyz& x) { return interpolate(c, x); },
+          tr, m_vertex_xyz, m_points, [&](std::uint32_t i) { return leaf_of_point(i); },
+          [&](Cell_index c, const Xyz& x) { return interpolate(c, x); },
           m_settings.surface_refinement_tolerance, 3., m_settings.maximum_depth);
       CGAL_ISM_TIMER_MARK(step, "surface refinement: misfit leaves " + std::to_string(misfit.size()));
       if(misfit.empty()) break;
@@ -819,6 +861,8 @@ private:
   // refinement 1.65 -> 1.5 s). A copy, so that m_points keeps its order and a second run
   // gives the same result; freed after the refinement, below the peak of the topology.
   std::vector<Xyz> m_cell_points;
+  std::vector<std::uint32_t> m_cell_point_index;  // of each cell point in m_points
+  std::vector<Cell_index> m_leaf_of_point;        // per point of m_points, to the end of the distance stage
   // per cell, in blocks: growing them never copies (as the triangulation's cells)
   ISM_reconstruction_3::internal::Block_array<std::array<std::uint32_t, 2> > m_range;
   ISM_reconstruction_3::internal::Block_array<ISM_reconstruction_3::internal::Plane_fit> m_fit;

@@ -647,26 +647,25 @@ void misfit_leaves_test()
   std::uniform_real_distribution<double> u(0.05, 0.95);
   std::vector<Point> points;
   for(int i = 0; i < 400; ++i) points.push_back({{ u(rng), u(rng), 0.5 }});
-  std::vector<std::uint32_t> order = internal::morton_order(points);
-  std::sort(order.begin(), order.end());
-  bool permutation = order.size() == points.size();
-  for(std::size_t i = 0; permutation && i < order.size(); ++i) permutation = order[i] == i;
-  CHECK(permutation, "misfit leaves: the Morton order is a permutation of the points");
-  CHECK(internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., 30).empty(),
+  // the leaf of points[i] (of the set being tested)
+  auto leaf_in = [&tr](const std::vector<Point>& pts) {
+    return [&tr, &pts](std::uint32_t i) { return tr.locate(K::Point_3(pts[i][0], pts[i][1], pts[i][2])); };
+  };
+  CHECK(internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., 30).empty(),
         "misfit leaves: points on the zero level of a linear F miss nothing");
   // level 9: cubes of side 1/8, the longest edge of a leaf 0.125 sqrt(3) = 0.22
   const Point above = {{ 0.31, 0.42, 0.5 + 0.0625 }};
   points.push_back(above);
-  const auto misfit = internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., 30);
+  const auto misfit = internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., 30);
   const Tr::Cell_index holder = tr.locate(K::Point_3(above[0], above[1], above[2]));
   CHECK(misfit.size() == 1 && misfit[0] == holder, "misfit leaves: the leaf of the one point off the zero level, alone");
-  CHECK(internal::misfit_leaves(tr, xyz, points, internal::morton_order(points), f, 0.05, 3., tr.level(holder)).empty(),
+  CHECK(internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., tr.level(holder)).empty(),
         "misfit leaves: a leaf at the maximum level is not reported");
   std::vector<Point> noisy(points);
   for(std::size_t i = 0; i + 1 < noisy.size(); ++i) noisy[i][2] += (i % 2 ? 1 : -1) * 0.03;
-  CHECK(internal::misfit_leaves(tr, xyz, noisy, internal::morton_order(noisy), f, 0.05, 3., 30).empty(),
+  CHECK(internal::misfit_leaves(tr, xyz, noisy, leaf_in(noisy), f, 0.05, 3., 30).empty(),
         "misfit leaves: a miss of 2 times the noise is not a bend");
-  CHECK(internal::misfit_leaves(tr, xyz, noisy, internal::morton_order(noisy), f, 0.05, 1.5, 30).size() == 1,
+  CHECK(internal::misfit_leaves(tr, xyz, noisy, leaf_in(noisy), f, 0.05, 1.5, 30).size() == 1,
         "misfit leaves: ... but of more than 1.5 times the noise it is");
 }
 

@@ -62,17 +62,15 @@ struct Orientation_test
   double leaf_size = 0;     // the longest edge of the leaf holding p
 };
 
+// `leaf`: the leaf holding p
 template <class Function>
 Orientation_test ism_orientation_of(const Function& function, const std::array<double, 3>& p,
-                                    const std::array<double, 3>& n)
+                                    const std::array<double, 3>& n, typename Function::Triangulation::Cell_index leaf)
 {
   typedef typename Function::Point Point;
   typedef typename Function::Triangulation Triangulation;
   Orientation_test result;
   const Triangulation& tr = function.triangulation();
-  const Point pp(p[0], p[1], p[2]);
-  if(tr.locate_root(pp) < 0) return result;
-  const typename Triangulation::Cell_index leaf = tr.locate(pp);
   const auto v = tr.vertices(leaf);
   double size2 = 0;
   for(int i = 0; i < 4; ++i)
@@ -114,6 +112,16 @@ Orientation_test ism_orientation_of(const Function& function, const std::array<d
     }
   }
   return result;
+}
+
+template <class Function>
+Orientation_test ism_orientation_of(const Function& function, const std::array<double, 3>& p,
+                                    const std::array<double, 3>& n)
+{
+  const typename Function::Triangulation& tr = function.triangulation();
+  const typename Function::Point pp(p[0], p[1], p[2]);
+  if(tr.locate_root(pp) < 0) return Orientation_test();
+  return ism_orientation_of(function, p, n, tr.locate(pp));
 }
 
 // Orients the points without a confident test from their confident neighbours: Prim's
