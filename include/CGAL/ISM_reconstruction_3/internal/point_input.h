@@ -72,15 +72,18 @@ inline void check_point_set(const std::vector<Xyz>& points)
       if(!std::isfinite(points[i][d]))
         throw std::invalid_argument("ISM reconstruction: point " + std::to_string(i) +
                                     " has a NaN or infinite coordinate");
-  std::vector<Xyz> distinct = points;
-  std::sort(distinct.begin(), distinct.end());
-  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  // only whether there are that many distinct points, so a scan that stops there, not a
+  // sort of a copy (0.2 s on the dragon's 437k points)
   const std::size_t minimum = 10;
+  std::vector<Xyz> distinct;
+  for(std::size_t i = 0; i < points.size() && distinct.size() < minimum; ++i)
+    if(std::find(distinct.begin(), distinct.end(), points[i]) == distinct.end()) distinct.push_back(points[i]);
   if(distinct.size() < minimum)
     throw std::invalid_argument("ISM reconstruction: " + std::to_string(distinct.size()) +
                                 " distinct points (of " + std::to_string(points.size()) +
                                 "); at least " + std::to_string(minimum) + " are needed to bound a volume");
-  const Principal_axes pa = principal_axes(distinct);
+  // duplicates weigh the variances but cannot make a zero one positive, or the reverse
+  const Principal_axes pa = principal_axes(points);
   const double largest = pa.variance[2];
   if(pa.variance[1] <= 1e-12 * largest)
     throw std::invalid_argument("ISM reconstruction: all points lie on a line; they cannot bound a volume");
