@@ -194,7 +194,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0.15`}
     \cgalParamNEnd
     \cgalParamNBegin{tangent_plane_signs}
-      \cgalParamDescription{after the distances and the handles, a vertex nearer to the points than 0.75 times the median size of the leaves the surface crosses takes the side of the tangent planes of its nearest points (PCA normals oriented by the in/out function, as `ism_orient_normals()` does) and its distance to them as value; islands and thin handles are then removed again; `false`: the Ising sign of every vertex (the paper). Measured at 36k points: no query farther than 1 % of the diagonal on the wrong side on 13 of 13 samplings of the bunny (8 of 13 without), mean distance 0.051 % of the diagonal instead of 0.075 %; on 21 meshes of libcgal-demo 14 such queries instead of 28, homer gains a handle}
+      \cgalParamDescription{after the distances and the handles, a vertex nearer to the points than 0.75 times the size of the leaves the surface crosses (the median, or the local one where the leaves are larger: a sparser sampling) takes the side of the tangent planes of its nearest points (PCA normals oriented by the in/out function, as `ism_orient_normals()` does) and its distance to them as value; islands and thin handles are then removed again; `false`: the Ising sign of every vertex (the paper). Measured at 36k points: no query farther than 1 % of the diagonal on the wrong side on 13 of 13 samplings of the bunny (8 of 13 without), mean distance 0.051 % of the diagonal instead of 0.075 %; on 21 meshes of libcgal-demo 14 such queries instead of 28, homer gains a handle}
       \cgalParamType{`bool`}
       \cgalParamDefault{`true`}
     \cgalParamNEnd

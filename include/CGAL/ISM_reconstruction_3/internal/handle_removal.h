@@ -188,6 +188,24 @@ double median_surface_leaf_size(const Triangulation& tr, const std::vector<std::
   return sizes[sizes.size() / 2];
 }
 
+// Per vertex, the longest edge of the smallest leaf around it: the size of the leaves at
+// that place. Where the sampling is uniform, at the vertices near the points it is the
+// median size of the leaves the surface crosses or one level below (0.88 of it, measured on
+// bunny00 at 36k points); where the points are sparser the leaves, and it, are larger.
+template <class Triangulation>
+std::vector<float> smallest_leaf_at_vertices(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz)
+{
+  typedef typename Triangulation::Cell_index Cell_index;
+  std::vector<float> size(tr.number_of_vertices(), HUGE_VALF);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c))
+    {
+      const float e = float(longest_edge(tr.vertices(c), xyz));
+      for(int l = 0; l < 4; ++l) size[tr.vertex(c, l)] = (std::min)(size[tr.vertex(c, l)], e);
+    }
+  return size;
+}
+
 // Removes the handles of the surface that only vertices nearer to the surface than
 // `relative_depth` times the median size of the leaves it crosses hold open: first the
 // outside sweep (a tunnel through a thin plate is filled), then the inside sweep (a thin

@@ -67,16 +67,17 @@ inline void estimate_point_normals(const std::vector<std::array<double, 3> >& po
   });
 }
 
-// The voters of each vertex: its 6 nearest points if the nearest is closer than `radius`
-// and the vertex is not on the box boundary (`fixed`: those stay outside so that the
-// surface stays closed), else none (all entries `none`). Only these points need an oriented
-// normal: on the dragon (437k points) they are about a third of the points.
+// The voters of each vertex v: its 6 nearest points if the nearest is closer than
+// `radius_of(v)` and the vertex is not on the box boundary (`fixed`: those stay outside so
+// that the surface stays closed), else none (all entries `none`). Only these points need an
+// oriented normal: on the dragon (437k points) they are about a third of the points.
 typedef std::array<std::uint32_t, 6> Voters;
 constexpr std::uint32_t none = std::uint32_t(-1);
 
-inline std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >& vertices,
-                                              const std::vector<char>& fixed, const Point_neighbors& neighbors,
-                                              double radius)
+template <class RadiusOf>
+std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >& vertices,
+                                       const std::vector<char>& fixed, const Point_neighbors& neighbors,
+                                       const RadiusOf& radius_of)
 {
   std::vector<Voters> voters(vertices.size());
   for_each_index(vertices.size(), [&](std::size_t v) {
@@ -89,9 +90,18 @@ inline std::vector<Voters> voters_of_vertices(const std::vector<std::array<doubl
       w[m++] = i;
       nearest2 = (std::min)(nearest2, d2);
     });
+    const double radius = radius_of(v);
     if(!(nearest2 < radius * radius)) w.fill(none);
   });
   return voters;
+}
+
+// the same with one radius for all vertices
+inline std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >& vertices,
+                                              const std::vector<char>& fixed, const Point_neighbors& neighbors,
+                                              double radius)
+{
+  return voters_of_vertices(vertices, fixed, neighbors, [radius](std::size_t) { return radius; });
 }
 
 // Re-signs the vertices that have voters. Each voter with an outward normal (`normal_of(i)`
