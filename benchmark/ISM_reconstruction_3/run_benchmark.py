@@ -112,6 +112,32 @@ def run_one(cmd, timeout):
                 err.read().decode(errors="replace"), wall, ru.ru_maxrss / 1024.0)
 
 
+def run_case(cmd, timeout, identity):
+    """Runs one benchmark_reconstruction command (run_one); returns its JSON line as a dict,
+    or `identity` with a status of timeout, crash or failed, plus wall_process and rss_mb."""
+    code, out, err, wall, rss = run_one(cmd, timeout)
+    r = None
+    for line in out.splitlines():
+        line = line.strip()
+        if line.startswith("{"):
+            try:
+                r = json.loads(line)
+            except ValueError:
+                pass
+    if code is None:
+        r = dict(identity, status="timeout")
+    elif r is None:
+        tail = err.strip().splitlines()[-1:] if err.strip() else []
+        r = dict(identity, status="crash" if code < 0 else "failed",
+                 error=("exit %d; " % code) + (tail[0] if tail else ""))
+    elif code != 0 and r.get("status") == "ok":
+        r["status"] = "failed"
+        r["error"] = "exit %d" % code
+    r["wall_process"] = wall
+    r["rss_mb"] = rss
+    return r
+
+
 def has_scores(r):
     if r.get("status") != "ok":
         return False
@@ -453,27 +479,8 @@ def main():
             if close:
                 cmd.append("--close-holes")
             load = os.getloadavg()[0]
-            code, out, err, wall, rss = run_one(cmd, timeout)
-            r = None
-            for line in out.splitlines():
-                line = line.strip()
-                if line.startswith("{"):
-                    try:
-                        r = json.loads(line)
-                    except ValueError:
-                        pass
-            if code is None:
-                r = {"method": m, "case": name, "n_points": n, "noise": noise, "status": "timeout"}
-            elif r is None:
-                tail = err.strip().splitlines()[-1:] if err.strip() else []
-                r = {"method": m, "case": name, "n_points": n, "noise": noise,
-                     "status": "crash" if code < 0 else "failed",
-                     "error": ("exit %d; " % code) + (tail[0] if tail else "")}
-            elif code != 0 and r.get("status") == "ok":
-                r["status"] = "failed"
-                r["error"] = "exit %d" % code
-            r["wall_process"] = wall
-            r["rss_mb"] = rss
+            r = run_case(cmd, timeout, {"method": m, "case": name, "n_points": n, "noise": noise})
+            wall = r["wall_process"]
             r["load_before"] = load
             results.append(r)
             jsonl.write(json.dumps(r) + "\n")

@@ -15,11 +15,12 @@ Outputs in --out (default: the benchmark/ directory): survey.md, survey.jsonl.
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tarfile
 import tempfile
 import time
+
+from run_benchmark import run_case  # one process per run, killed with its group on timeout
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -64,22 +65,17 @@ def main():
     exe = os.path.join(args.build, "benchmark", "ISM_reconstruction_3", "benchmark_reconstruction")
     if not os.path.exists(exe):
         sys.exit("run_survey.py: %s not found (build the target benchmark_reconstruction)" % exe)
-    work = tempfile.mkdtemp(prefix="ism_survey_")
-    extract(args.tarball, names, work)
     started = time.strftime("%Y-%m-%d %H:%M")
     rows = []
-    for n in names:
-        cmd = [exe, "--method", "ism", "--mesh", os.path.join(work, n + ".off"), "--points", str(args.points),
-               "--seed", "1", "--case", n]
-        try:
-            p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=args.timeout, text=True)
-            lines = [l for l in p.stdout.splitlines() if l.startswith("{")]
-            r = json.loads(lines[-1]) if lines else {"case": n, "status": "no output (exit %d)" % p.returncode}
-        except subprocess.TimeoutExpired:
-            r = {"case": n, "status": "timeout"}
-        rows.append(r)
-        print("%-22s %s" % (n, {k: r.get(k) for k in ("status", "genus", "components", "inout_far", "time_total")}),
-              flush=True)
+    with tempfile.TemporaryDirectory(prefix="ism_survey_") as work:
+        extract(args.tarball, names, work)
+        for n in names:
+            cmd = [exe, "--method", "ism", "--mesh", os.path.join(work, n + ".off"), "--points", str(args.points),
+                   "--seed", "1", "--case", n]
+            r = run_case(cmd, args.timeout, {"method": "ism", "case": n, "n_points": args.points, "noise": 0})
+            rows.append(r)
+            print("%-22s %s" % (n, {k: r.get(k) for k in ("status", "genus", "components", "inout_far", "time_total")}),
+                  flush=True)
     with open(os.path.join(args.out, "survey.jsonl"), "w") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")

@@ -20,9 +20,9 @@
 //              the bunny sampled at 36k points: gaussian noise 0.25 % and 0.5 % of the
 //              diagonal, 1 % uniform outliers in the box, one half (x > median) ten times
 //              denser than the other; nonuniform_dense: the 36k bunny's density on one
-//              half, ten times that on the other (198k points). The output must be closed, 2-manifold, one component,
-//              genus 0, and right in/out on 100 % of the queries farther than 1 % of the
-//              diagonal from the true surface. noise_clean is the same without noise (a
+//              half, ten times that on the other (198k points). The output must be closed,
+//              2-manifold, one component, genus 0, and right in/out on 100 % of the
+//              queries farther than 1 % of the diagonal from the true surface. noise_clean is the same without noise (a
 //              reference for the others). These are not loosened when they fail.
 // determinism  same input, parameters and seed: byte-identical .off over two runs and over
 //              1 and 2 threads (tbb::global_control, when CGAL_LINKED_WITH_TBB).
