@@ -331,6 +331,10 @@ const std::vector<Option>& options()
     ISM_REAL_OPTION("--surface-refinement-tolerance", surface_refinement_tolerance,
                     "miss of the function at a point, relative to its leaf's longest edge, above which "
                     "the leaf is bisected"),
+    ISM_INTEGER_OPTION("--escape-rays", escape_rays,
+                       "last, turn outside an inside vertex of the surface's leaves away from the points if "
+                       "this many rays from it, pointing away from its nearest point, all leave the box "
+                       "without meeting a point; 0: never"),
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times; 0: never"),

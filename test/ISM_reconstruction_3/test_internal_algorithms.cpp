@@ -8,6 +8,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
+#include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -719,6 +720,80 @@ void point_smoothing_test()
   CHECK(moved < 1e-6, "point smoothing: points on a line stay there, moved " + std::to_string(moved));
 }
 
+// Points on a sphere of radius 0.5 (the closed sampled solid) in the grid on [-1,1]^3; the
+// inside: the vertices in the ball, and a slab beside it (0.5 < x < 0.6, |y|, |z| < 0.2) such
+// as the Ising signs leave beside a thin part. The escape rays must remove the slab, keep
+// the ball, and keep a slab that rays cannot leave (one walled in by a second sphere).
+void escape_rays_test(const Tet_mesh& grid)
+{
+  for(bool walled : { false, true })
+  {
+    std::vector<std::array<double, 3> > points;
+    const int n = 20000;
+    for(double radius : { 0.5, 0.8 })
+      for(int i = 0; i < (radius == 0.5 || walled ? n : 0); ++i)
+      {
+        const double z = 1 - (2. * i + 1) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
+        points.push_back({{ radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z }});
+      }
+    const internal::Point_neighbors neighbors(points);
+    const std::size_t nv = grid.points.size();
+    std::vector<signed char> signs(nv, 1);
+    std::vector<double> values(nv, 1.);
+    std::vector<char> fixed(nv, 0);
+    std::size_t ball = 0, slab = 0;
+    auto in_slab = [](const Point& p) { return p[0] > 0.5 && p[0] < 0.6 && std::abs(p[1]) < 0.2 && std::abs(p[2]) < 0.2; };
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const Point& p = grid.points[v];
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      if(r < 0.5 || in_slab(p))
+      {
+        signs[v] = -1;
+        values[v] = -1.;
+        (r < 0.5 ? ball : slab) += 1;
+      }
+      for(int d = 0; d < 3; ++d) fixed[v] = fixed[v] || std::abs(std::abs(p[d]) - 1) < 1e-9;
+    }
+    const std::vector<signed char> before = signs;
+    const Tet_mesh_leaves leaves{grid};
+    const std::size_t turned = internal::remove_escaping_inside(
+        leaves, grid.points, points, neighbors, fixed, 5, [&](std::uint32_t) { return 0.4 * grid.h; },
+        [](std::uint32_t, const std::array<double, 3>&) { return true; }, signs, values);
+    std::size_t slab_left = 0, ball_lost = 0;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const Point& p = grid.points[v];
+      const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+      if(before[v] < 0 && signs[v] < 0 && r >= 0.5) ++slab_left;
+      if(r < 0.5 && signs[v] > 0) ++ball_lost;
+      if(before[v] != signs[v]) CHECK(values[v] > 0, "escape rays: a vertex turned outside has a negative value");
+    }
+    const std::string name = walled ? "escape rays, slab walled in by a second sphere: " : "escape rays: ";
+    CHECK(ball > 100 && slab > 10, name << "test set-up: " << ball << " ball and " << slab << " slab vertices");
+    CHECK(ball_lost == 0, name << ball_lost << " of the " << ball << " vertices of the sampled ball turned outside");
+    if(walled)
+      CHECK(turned == 0 && slab_left == slab, name << turned << " vertices turned outside, none may");
+    else
+      CHECK(slab_left == 0 && turned == slab, name << slab_left << " of " << slab << " slab vertices left inside, "
+                                                   << turned << " turned outside");
+  }
+  // one ray: from outside the sphere away from it, it leaves; towards it, it stops
+  std::vector<std::array<double, 3> > points;
+  for(int i = 0; i < 2000; ++i)
+  {
+    const double z = 1 - (2. * i + 1) / 2000, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
+    points.push_back({{ r * std::cos(phi), r * std::sin(phi), z }});
+  }
+  const internal::Point_neighbors neighbors(points);
+  const internal::Escape_box box = internal::bounding_box_of(points);
+  // (0.75, 0, 0.75): outside the unit sphere, inside the points' bounding box
+  const double a = std::sqrt(0.5);
+  CHECK(internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ a, 0., a }}, 0.05, box), "escape rays: a ray away from a sphere stops");
+  CHECK(!internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ -a, 0., -a }}, 0.05, box), "escape rays: a ray into a sphere leaves");
+  CHECK(!internal::ray_escapes(neighbors, {{ 0., 0., 0. }}, {{ 0.6, 0., 0.8 }}, 0.05, box), "escape rays: a ray from a sphere's center leaves");
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -752,6 +827,9 @@ int main()
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();
+
+  std::cout << "Escape rays" << std::endl;
+  escape_rays_test(kuhn_grid(40, false));
 
   std::cout << "Misfit leaves" << std::endl;
   misfit_leaves_test();

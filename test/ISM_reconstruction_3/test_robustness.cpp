@@ -1045,6 +1045,10 @@ std::vector<Case> corpus_cases()
   ISM_PARAM_CASE("surface_refinement_passes_-1", ERROR, params::surface_refinement_passes(-1));
   ISM_PARAM_CASE("surface_refinement_passes_11", ERROR, params::surface_refinement_passes(11));
   ISM_PARAM_CASE("surface_refinement_passes_10", ANY, params::surface_refinement_passes(10));
+  ISM_PARAM_CASE("escape_rays_-1", ERROR, params::escape_rays(-1));
+  ISM_PARAM_CASE("escape_rays_65", ERROR, params::escape_rays(65));
+  ISM_PARAM_CASE("escape_rays_1", ANY, params::escape_rays(1));
+  ISM_PARAM_CASE("escape_rays_64", ANY, params::escape_rays(64));
   ISM_PARAM_CASE("surface_refinement_tolerance_0", ERROR, params::surface_refinement_tolerance(0.));
   ISM_PARAM_CASE("surface_refinement_tolerance_nan", ERROR, params::surface_refinement_tolerance(NaN));
   ISM_PARAM_CASE("point_smoothing_iterations_-1", ERROR, params::point_smoothing_iterations(-1));

@@ -61,6 +61,7 @@ enum point_smoothing_iterations_t { point_smoothing_iterations };
 enum point_smoothing_neighbors_t { point_smoothing_neighbors };
 enum point_smoothing_noise_t { point_smoothing_noise };
 enum memory_limit_t { memory_limit };
+enum escape_rays_t { escape_rays };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -107,6 +108,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_iterations)
 CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_neighbors)
 CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_noise)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
+CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

@@ -66,6 +66,9 @@ struct Settings
   int surface_refinement_passes = 2;
   /*! the miss of F at a point, relative to the longest edge of its leaf, above which the leaf is bisected */
   double surface_refinement_tolerance = 0.05;
+  /*! last, an inside vertex of the surface's leaves away from the points is turned outside if this many rays
+      from it, pointing away from its nearest point, all leave the box without meeting a point; 0: never (the paper) */
+  int escape_rays = 5;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
@@ -91,6 +94,7 @@ struct Settings
     s.thin_handle_depth = 0;
     s.tangent_plane_signs = false;
     s.surface_refinement_passes = 0;
+    s.escape_rays = 0;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
     return s;
@@ -140,6 +144,7 @@ struct Settings
       fail("surface_refinement_passes", std::to_string(surface_refinement_passes), "[0, 10]");
     if(!(surface_refinement_tolerance > 0 && surface_refinement_tolerance <= 1))
       fail("surface_refinement_tolerance", str(surface_refinement_tolerance), "(0, 1]");
+    if(escape_rays < 0 || escape_rays > 64) fail("escape_rays", std::to_string(escape_rays), "[0, 64]");
     if(point_smoothing_iterations < 0 || point_smoothing_iterations > 100)
       fail("point_smoothing_iterations", std::to_string(point_smoothing_iterations), "[0, 100]");
     if(point_smoothing_neighbors < 6 || point_smoothing_neighbors > 64)
@@ -181,6 +186,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.surface_refinement_passes = choose_parameter(get_parameter(np, inp::surface_refinement_passes), d.surface_refinement_passes);
   s.surface_refinement_tolerance =
       choose_parameter(get_parameter(np, inp::surface_refinement_tolerance), d.surface_refinement_tolerance);
+  s.escape_rays = choose_parameter(get_parameter(np, inp::escape_rays), d.escape_rays);
   s.point_smoothing_iterations =
       choose_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations);
   s.point_smoothing_neighbors = choose_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors);
