@@ -720,6 +720,16 @@ void point_smoothing_test()
   CHECK(moved < 1e-6, "point smoothing: points on a line stay there, moved " + std::to_string(moved));
 }
 
+// n points spread evenly on the sphere of centre 0 and radius `radius` (a Fibonacci spiral)
+void add_sphere_points(std::vector<std::array<double, 3> >& points, int n, double radius)
+{
+  for(int i = 0; i < n; ++i)
+  {
+    const double z = 1 - (2. * i + 1) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
+    points.push_back({{ radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z }});
+  }
+}
+
 // Points on a sphere of radius 0.5 (the closed sampled solid) in the grid on [-1,1]^3; the
 // inside: the vertices in the ball, and a slab beside it (0.5 < x < 0.6, |y|, |z| < 0.2) such
 // as the Ising signs leave beside a thin part. The escape rays must remove the slab, keep
@@ -729,13 +739,8 @@ void escape_rays_test(const Tet_mesh& grid)
   for(bool walled : { false, true })
   {
     std::vector<std::array<double, 3> > points;
-    const int n = 20000;
-    for(double radius : { 0.5, 0.8 })
-      for(int i = 0; i < (radius == 0.5 || walled ? n : 0); ++i)
-      {
-        const double z = 1 - (2. * i + 1) / n, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
-        points.push_back({{ radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z }});
-      }
+    add_sphere_points(points, 20000, 0.5);
+    if(walled) add_sphere_points(points, 20000, 0.8);
     const internal::Point_neighbors neighbors(points);
     const std::size_t nv = grid.points.size();
     std::vector<signed char> signs(nv, 1);
@@ -780,11 +785,7 @@ void escape_rays_test(const Tet_mesh& grid)
   }
   // one ray: from outside the sphere away from it, it leaves; towards it, it stops
   std::vector<std::array<double, 3> > points;
-  for(int i = 0; i < 2000; ++i)
-  {
-    const double z = 1 - (2. * i + 1) / 2000, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653;
-    points.push_back({{ r * std::cos(phi), r * std::sin(phi), z }});
-  }
+  add_sphere_points(points, 2000, 1.);
   const internal::Point_neighbors neighbors(points);
   const internal::Escape_box box = internal::bounding_box_of(points);
   // (0.75, 0, 0.75): outside the unit sphere, inside the points' bounding box

@@ -76,12 +76,11 @@ inline bool ray_escapes(const Point_neighbors& neighbors, Escape_xyz x, const Es
   return false;
 }
 
-// Whether all `rays` rays from `x` escape: one away from `nearest` (a point at distance
-// `distance` > 0), the others tilted from it by atan(`tilt`) around it.
-inline bool all_rays_escape(const Point_neighbors& neighbors, const Escape_xyz& x, const Escape_xyz& nearest,
-                            double distance, int rays, double tilt, double hit_radius, const Escape_box& box)
+// Whether all `rays` rays from `x` escape: one along the unit `u`, the others tilted from it
+// by atan(`tilt`) around it.
+inline bool all_rays_escape(const Point_neighbors& neighbors, const Escape_xyz& x, const Escape_xyz& u, int rays,
+                            double tilt, double hit_radius, const Escape_box& box)
 {
-  const Escape_xyz u = {{ (x[0] - nearest[0]) / distance, (x[1] - nearest[1]) / distance, (x[2] - nearest[2]) / distance }};
   // e1, e2: an orthonormal basis of the plane orthogonal to u
   const Escape_xyz a = std::abs(u[0]) < 0.9 ? Escape_xyz{{ 1., 0., 0. }} : Escape_xyz{{ 0., 1., 0. }};
   Escape_xyz e1 = {{ u[1] * a[2] - u[2] * a[1], u[2] * a[0] - u[0] * a[2], u[0] * a[1] - u[1] * a[0] }};
@@ -144,7 +143,7 @@ std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escap
       const double hit_radius = hit_radius_of(candidates[j]);
       if(!(distance > hit_radius)) return;
       const Escape_xyz u = {{ (x[0] - nearest[0]) / distance, (x[1] - nearest[1]) / distance, (x[2] - nearest[2]) / distance }};
-      if(worth_testing(candidates[j], u) && all_rays_escape(neighbors, x, nearest, distance, rays, tilt, hit_radius, box))
+      if(worth_testing(candidates[j], u) && all_rays_escape(neighbors, x, u, rays, tilt, hit_radius, box))
         outside_value[j] = distance;
     });
     std::size_t turned_now = 0;
