@@ -55,6 +55,14 @@ def extract(tarball, names, into):
         sys.exit("run_survey.py: not in %s: %s" % (tarball, ", ".join(missing)))
 
 
+def benchmark_executable(build, script):
+    """benchmark_reconstruction in the CMake build directory `build`; exits naming `script` if absent."""
+    exe = os.path.join(build, "benchmark", "ISM_reconstruction_3", "benchmark_reconstruction")
+    if not os.path.exists(exe):
+        sys.exit("%s: %s not found (build the target benchmark_reconstruction)" % (script, exe))
+    return exe
+
+
 def pct(x, digits=2):
     return "—" if x is None else ("%." + str(digits) + "f") % (100.0 * x)
 
@@ -62,9 +70,7 @@ def pct(x, digits=2):
 def main():
     args = parse_args()
     names = args.meshes.split(",") if args.meshes else MESHES
-    exe = os.path.join(args.build, "benchmark", "ISM_reconstruction_3", "benchmark_reconstruction")
-    if not os.path.exists(exe):
-        sys.exit("run_survey.py: %s not found (build the target benchmark_reconstruction)" % exe)
+    exe = benchmark_executable(args.build, "run_survey.py")
     started = time.strftime("%Y-%m-%d %H:%M")
     rows = []
     with tempfile.TemporaryDirectory(prefix="ism_survey_") as work:
