@@ -787,12 +787,11 @@ void escape_rays_test(const Tet_mesh& grid)
   std::vector<std::array<double, 3> > points;
   add_sphere_points(points, 2000, 1.);
   const internal::Point_neighbors neighbors(points);
-  const internal::Escape_box box = internal::bounding_box_of(points);
   // (0.75, 0, 0.75): outside the unit sphere, inside the points' bounding box
   const double a = std::sqrt(0.5);
-  CHECK(internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ a, 0., a }}, 0.05, box), "escape rays: a ray away from a sphere stops");
-  CHECK(!internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ -a, 0., -a }}, 0.05, box), "escape rays: a ray into a sphere leaves");
-  CHECK(!internal::ray_escapes(neighbors, {{ 0., 0., 0. }}, {{ 0.6, 0., 0.8 }}, 0.05, box), "escape rays: a ray from a sphere's center leaves");
+  CHECK(internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ a, 0., a }}, 0.05), "escape rays: a ray away from a sphere stops");
+  CHECK(!internal::ray_escapes(neighbors, {{ 0.75, 0., 0.75 }}, {{ -a, 0., -a }}, 0.05), "escape rays: a ray into a sphere leaves");
+  CHECK(!internal::ray_escapes(neighbors, {{ 0., 0., 0. }}, {{ 0.6, 0., 0.8 }}, 0.05), "escape rays: a ray from a sphere's center leaves");
 }
 
 int main()

@@ -34,37 +34,15 @@ namespace internal {
 
 typedef std::array<double, 3> Escape_xyz;
 
-struct Escape_box
-{
-  Escape_xyz lo, hi;
-  bool contains(const Escape_xyz& x, double margin) const
-  {
-    for(int d = 0; d < 3; ++d)
-      if(x[d] < lo[d] - margin || x[d] > hi[d] + margin) return false;
-    return true;
-  }
-};
-
-inline Escape_box bounding_box_of(const std::vector<Escape_xyz>& points)
-{
-  Escape_box b{ points.front(), points.front() };
-  for(const Escape_xyz& p : points)
-    for(int d = 0; d < 3; ++d)
-    {
-      b.lo[d] = (std::min)(b.lo[d], p[d]);
-      b.hi[d] = (std::max)(b.hi[d], p[d]);
-    }
-  return b;
-}
-
-// Whether the ray from `x` along the unit `direction` leaves `box` (grown by `hit_radius`)
-// before passing nearer than `hit_radius` to a point. Sphere tracing: no point is nearer
+// Whether the ray from `x` along the unit `direction` leaves the points' bounding box
+// (grown by `hit_radius`) before passing nearer than `hit_radius` to a point. Sphere tracing: no point is nearer
 // than the distance to the nearest point, so the ray advances by it (at least
 // `hit_radius` a step). A ray still inside after 400 steps (grazing a surface) counts as
 // stopped.
 inline bool ray_escapes(const Point_neighbors& neighbors, Escape_xyz x, const Escape_xyz& direction,
-                        double hit_radius, const Escape_box& box)
+                        double hit_radius)
 {
+  const Point_neighbors::Box& box = neighbors.bounding_box();
   for(int step = 0; step < 400; ++step)
   {
     if(!box.contains(x, hit_radius)) return true;
@@ -79,7 +57,7 @@ inline bool ray_escapes(const Point_neighbors& neighbors, Escape_xyz x, const Es
 // Whether all `rays` rays from `x` escape: one along the unit `u`, the others tilted from it
 // by atan(`tilt`) around it.
 inline bool all_rays_escape(const Point_neighbors& neighbors, const Escape_xyz& x, const Escape_xyz& u, int rays,
-                            double tilt, double hit_radius, const Escape_box& box)
+                            double tilt, double hit_radius)
 {
   // e1, e2: an orthonormal basis of the plane orthogonal to u
   const Escape_xyz a = std::abs(u[0]) < 0.9 ? Escape_xyz{{ 1., 0., 0. }} : Escape_xyz{{ 0., 1., 0. }};
@@ -97,7 +75,7 @@ inline bool all_rays_escape(const Point_neighbors& neighbors, const Escape_xyz& 
       const double l = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
       for(double& c : w) c /= l;
     }
-    if(!ray_escapes(neighbors, x, w, hit_radius, box)) return false;
+    if(!ray_escapes(neighbors, x, w, hit_radius)) return false;
   }
   return true;
 }
@@ -116,7 +94,6 @@ std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escap
                                    const WorthTesting& worth_testing, std::vector<signed char>& signs, std::vector<double>& values)
 {
   if(rays <= 0 || points.empty()) return 0;
-  const Escape_box box = bounding_box_of(points);
   const double tilt = 0.5;
   std::vector<char> tested(signs.size(), 0);
   std::size_t turned = 0;
@@ -143,7 +120,7 @@ std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escap
       const double hit_radius = hit_radius_of(candidates[j]);
       if(!(distance > hit_radius)) return;
       const Escape_xyz u = {{ (x[0] - nearest[0]) / distance, (x[1] - nearest[1]) / distance, (x[2] - nearest[2]) / distance }};
-      if(worth_testing(candidates[j], u) && all_rays_escape(neighbors, x, u, rays, tilt, hit_radius, box))
+      if(worth_testing(candidates[j], u) && all_rays_escape(neighbors, x, u, rays, tilt, hit_radius))
         outside_value[j] = distance;
     });
     std::size_t turned_now = 0;

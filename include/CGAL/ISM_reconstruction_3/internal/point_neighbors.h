@@ -45,10 +45,20 @@ class Point_neighbors
   // the result of k up to this is kept on the stack: no allocation per query
   static constexpr unsigned int stack_capacity = 64;
 
+public:
   struct Box
   {
     double lo[3], hi[3];
+    // whether x is in the box grown by `margin`
+    bool contains(const std::array<double, 3>& x, double margin) const
+    {
+      for(int d = 0; d < 3; ++d)
+        if(x[d] < lo[d] - margin || x[d] > hi[d] + margin) return false;
+      return true;
+    }
   };
+
+private:
   // single precision, rounded outward: still a lower bound of every point's distance, in a
   // node half the size
   struct Float_box
@@ -97,6 +107,8 @@ public:
   }
 
   std::size_t size() const { return m_points.size(); }
+  // the bounding box of the points (all zero if there are none)
+  const Box& bounding_box() const { return m_box; }
 
   // calls `visit(index, squared distance)` for the k nearest points of `q`, nearest first
   // (all points if fewer than k); thread-safe: the tree is only read
