@@ -233,9 +233,9 @@ public:
     final_schedule.final_temperature =
         final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
     estimate_topology(final_schedule, true);
-    // the triangulation is final: its box boundary and its leaves serve the islands and
-    // the handles
-    const std::vector<char> boundary = ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr);
+    // the triangulation is final (up to the surface refinement, which updates them): its box
+    // boundary and its leaves serve the islands and the handles
+    std::vector<char> boundary = ISM_reconstruction_3::internal::box_boundary_vertices(*m_tr);
     ISM_reconstruction_3::internal::Leaf_vertices<Triangulation> leaves(*m_tr);
     if(m_settings.minimum_island_fraction > 0)
       m_stats.number_of_flipped_islands =
@@ -266,7 +266,7 @@ public:
     CGAL_ISM_TIMER_MARK(step, "tangent planes");
     if(m_settings.surface_refinement_passes > 0) refine_surface_leaves(neighbors, boundary, leaves);
     CGAL_ISM_TIMER_MARK(step, "surface refinement");
-    if(m_settings.escape_rays > 0) remove_escaping_inside(neighbors, leaves);
+    if(m_settings.escape_rays > 0) remove_escaping_inside(neighbors, leaves, boundary);
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
     std::vector<float>().swap(m_voting_radius);
@@ -778,13 +778,13 @@ private:
   // instead of five: genus 4). The hit radius is 0.4 times the voting radius of the tangent
   // planes: 0.3 let rays slip between noisy points out of the solid (genus 1 on 3 of 5), 0.7
   // left more slabs.
-  // `leaves`: those of the final triangulation
-  void remove_escaping_inside(const ISM_reconstruction_3::internal::Point_neighbors& neighbors, const Leaf_vertices& leaves)
+  // `leaves`, `boundary`: the leaves and box boundary vertices of the final triangulation
+  void remove_escaping_inside(const ISM_reconstruction_3::internal::Point_neighbors& neighbors, const Leaf_vertices& leaves,
+                              const std::vector<char>& boundary)
   {
     namespace I = ISM_reconstruction_3::internal;
     if(m_voting_radius.size() != m_sign.size()) set_voting_radii(leaves);
     if(m_depth.size() != m_value.size()) m_depth = m_value;
-    const std::vector<char> boundary = I::box_boundary_vertices(*m_tr);
     const std::size_t turned = I::remove_escaping_inside(
         leaves, m_vertex_xyz, m_points, neighbors, boundary, m_settings.escape_rays,
         [&](std::uint32_t v) { return 0.4 * double(m_voting_radius[v]); },
@@ -814,9 +814,10 @@ private:
   // points, the tangent planes give its side. Measured on bunny00 at 36k points, 13
   // samplings: mean distance 0.055-0.059 -> 0.037-0.039 % of the diagonal, far in/out errors
   // on 3 -> 1 sampling; at 0.25 % noise 2 of 3 -> 0 of 3.
-  // `leaves`: those of the triangulation before, after it on return
+  // `leaves`, `boundary`: the leaves and box boundary vertices of the triangulation before,
+  // after it on return
   void refine_surface_leaves(const ISM_reconstruction_3::internal::Point_neighbors& neighbors,
-                             const std::vector<char>& boundary, Leaf_vertices& leaves)
+                             std::vector<char>& boundary, Leaf_vertices& leaves)
   {
     namespace I = ISM_reconstruction_3::internal;
     Triangulation& tr = *m_tr;
@@ -871,7 +872,8 @@ private:
     if(m_stats.number_of_misfit_leaves == 0) return;
     // the new sides can close small loops (bunny with 0.25 % noise: genus 1 on 2 of 3 without)
     leaves.assign(tr);
-    remove_islands_and_thin_handles(leaves, I::box_boundary_vertices(tr));
+    boundary = I::box_boundary_vertices(tr);
+    remove_islands_and_thin_handles(leaves, boundary);
     CGAL_ISM_TIMER_MARK(step, "surface refinement: islands and thin handles");
     m_stats.number_of_leaves = tr.number_of_leaves();
     m_stats.number_of_vertices = tr.number_of_vertices();
