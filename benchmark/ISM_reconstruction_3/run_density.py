@@ -11,8 +11,13 @@ unoriented-input route in CGAL), scored by benchmark_reconstruction (one process
   /usr/bin/python3 run_density.py --build <cmake build dir> [--tarball data.tar.gz]
                                   [--out DIR] [--mesh bunny00] [--points 4000,8000,...]
                                   [--seeds 1,2,3] [--methods ism,poisson_jet_mst]
+                                  [--noise F] [--name density]
 
-Outputs in --out (default: the benchmark/ directory): density.md, density.jsonl.
+--noise adds gaussian noise of F times the diagonal to the samples: with one size and many
+seeds it measures how often a noise level gives the right surface (the robustness tests
+run one sampling per case).
+
+Outputs in --out (default: the benchmark/ directory): NAME.md, NAME.jsonl.
 """
 
 import argparse
@@ -39,6 +44,8 @@ def parse_args():
     ap.add_argument("--seeds", default="1,2,3")
     ap.add_argument("--methods", default="ism,poisson_jet_mst")
     ap.add_argument("--timeout", type=float, default=300)
+    ap.add_argument("--noise", type=float, default=0.0, help="gaussian noise, as a fraction of the diagonal")
+    ap.add_argument("--name", default="density", help="base name of the outputs")
     return ap.parse_args()
 
 
@@ -56,43 +63,57 @@ def main():
         for n in sizes:
             for m in methods:
                 for s in seeds:
-                    cmd = [exe, "--method", m, "--mesh", mesh, "--points", str(n), "--seed", str(s), "--case", args.mesh]
-                    r = run_case(cmd, args.timeout, {"method": m, "case": args.mesh, "n_points": n, "seed": s, "noise": 0})
+                    cmd = [exe, "--method", m, "--mesh", mesh, "--points", str(n), "--seed", str(s), "--case", args.mesh,
+                           "--noise", repr(args.noise)]
+                    r = run_case(cmd, args.timeout,
+                                 {"method": m, "case": args.mesh, "n_points": n, "seed": s, "noise": args.noise})
                     rows.append(r)
                     print("%-16s %6d seed %d %s" % (m, n, s, {k: r.get(k) for k in ("status", "genus", "inout_far")}),
                           flush=True)
-    with open(os.path.join(args.out, "density.jsonl"), "w") as f:
+    with open(os.path.join(args.out, args.name + ".jsonl"), "w") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
-    md = ["# ISM_reconstruction_3 density sweep: how few points each method needs", "",
-          "`%s.off` (libcgal-demo's data tarball) sampled by N area-weighted points without normals, seeds %s, "
+    noise = (", gaussian noise of %g %% of the diagonal" % (100 * args.noise)) if args.noise > 0 else ""
+    title = ("how often each method is right at %g %% noise" % (100 * args.noise)) if args.noise > 0 \
+        else "how few points each method needs"
+    md = ["# ISM_reconstruction_3 %s sweep: %s" % ("noise" if args.noise > 0 else "density", title), "",
+          "`%s.off` (libcgal-demo's data tarball) sampled by N area-weighted points without normals%s, seeds %s, "
           "reconstructed by each method and scored by `benchmark_reconstruction` "
           "(`benchmark/ISM_reconstruction_3/run_density.py`, %s). Poisson gets the normals CGAL users would give "
           "it for unoriented points: jet-estimated, oriented by a minimum spanning tree." %
-          (args.mesh, ", ".join(map(str, seeds)), started), "",
+          (args.mesh, noise, compact(seeds), started), "",
           "*right topology*: runs with the components and genus of the truth; *genus*: per seed; *far %*: share of "
           "the uniform queries farther than 1 % of the diagonal from the truth that are on the truth's side, worst "
           "and mean over the seeds; *mean dist*: symmetric surface distance in % of the diagonal (mean over the "
-          "seeds); time: the reconstruction alone (2 cores), mean.", "",
-          "| points | method | right topology | genus | far % worst / mean | mean dist % | time (s) |",
-          "|---|---|---|---|---|---|---|"]
+          "seeds); *all far right*: runs with the right topology and every far query on the truth's side (what "
+          "the robustness tests ask of one sampling); time: the reconstruction alone (2 cores), mean.", "",
+          "| points | method | right topology | all far right | genus | far % worst / mean | mean dist % | time (s) |",
+          "|---|---|---|---|---|---|---|---|"]
     for n in sizes:
         for m in methods:
             runs = [r for r in rows if r["n_points"] == n and r["method"] == m]
             ok = [r for r in runs if r.get("status") == "ok"]
             if not ok:
-                md.append("| %s | %s | 0 of %d | | | | |" % ("{:,}".format(n), LABELS.get(m, m), len(runs)))
+                md.append("| %s | %s | 0 of %d | 0 | | | | |" % ("{:,}".format(n), LABELS.get(m, m), len(runs)))
                 continue
             right = [r for r in ok if r["genus"] == r["truth_genus"] and r["components"] == r["truth_components"]]
             far = [r["inout_far"] for r in ok]
-            md.append("| %s | %s | %d of %d | %s | %s / %s | %.3f | %.2f |" % (
-                "{:,}".format(n), LABELS.get(m, m), len(right), len(runs),
+            perfect = [r for r in right if r["inout_far"] == 1.0]
+            md.append("| %s | %s | %d of %d | %d | %s | %s / %s | %.3f | %.2f |" % (
+                "{:,}".format(n), LABELS.get(m, m), len(right), len(runs), len(perfect),
                 ", ".join(str(r["genus"]) if r.get("status") == "ok" else r.get("status") for r in runs),
                 pct(min(far), 3), pct(sum(far) / len(far), 3),
                 100.0 * sum(r["dist_mean"] for r in ok) / len(ok), sum(r["time_total"] for r in ok) / len(ok)))
-    with open(os.path.join(args.out, "density.md"), "w") as f:
+    with open(os.path.join(args.out, args.name + ".md"), "w") as f:
         f.write("\n".join(md) + "\n")
-    print("wrote %s" % os.path.join(args.out, "density.md"))
+    print("wrote %s" % os.path.join(args.out, args.name + ".md"))
+
+
+def compact(seeds):
+    """1, 2, ..., 30 as "1-30" when consecutive: the title stays short for many seeds."""
+    if len(seeds) > 3 and seeds == list(range(seeds[0], seeds[0] + len(seeds))):
+        return "%d-%d" % (seeds[0], seeds[-1])
+    return ", ".join(map(str, seeds))
 
 
 if __name__ == "__main__":
