@@ -132,12 +132,15 @@ bool closes_loop(const Triangulation& tr, const std::vector<std::uint32_t>& offs
 // those at least `depth` from the surface (`deep`) are in X from the start, their
 // components already in `sets`: the sweep only visits the others. Adding v closes a loop
 // in X (`closes_loop()`); such a v changes side instead of joining X. Loops through deeper
-// vertices (the hole of a torus, the tube of a knot) are kept.
+// vertices (the hole of a torus, the tube of a knot) are kept. `depth_order`, if given, replaces
+// |value| as the depth that orders the sweep (remove_thin_handles() says when).
 template <class Triangulation>
 void open_shallow_loops(const Triangulation& tr, const std::vector<std::uint32_t>& offsets,
                         const std::vector<std::uint32_t>& leaves, const std::vector<char>& deep, signed char side,
-                        Disjoint_sets& sets, std::vector<signed char>& signs, std::vector<double>& values)
+                        Disjoint_sets& sets, std::vector<signed char>& signs, std::vector<double>& values,
+                        const std::vector<double>* depth_order = nullptr)
 {
+  const std::vector<double>& depth_of = depth_order ? *depth_order : values;
   const std::size_t n = signs.size();
   std::vector<std::uint32_t> order;
   std::vector<char> in_set(n, 0);
@@ -148,7 +151,7 @@ void open_shallow_loops(const Triangulation& tr, const std::vector<std::uint32_t
       else order.push_back(std::uint32_t(v));
     }
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const double da = std::abs(values[a]), db = std::abs(values[b]);
+    const double da = std::abs(depth_of[a]), db = std::abs(depth_of[b]);
     return da != db ? da > db : a < b;  // ties by index: deterministic
   });
   std::vector<std::uint32_t> link;   // the vertices of v's link in X
@@ -210,10 +213,16 @@ std::vector<float> smallest_leaf_at_vertices(const Triangulation& tr, const std:
 // `relative_depth` times the median size of the leaves it crosses hold open: first the
 // outside sweep (a tunnel through a thin plate is filled), then the inside sweep (a thin
 // bridge is cut). Returns the number of vertices that changed side.
+// `inside_order`, if given, orders the inside sweep instead of |values| (which still decide
+// which vertices are shallow): between the two walls of a thin part the paper's plane
+// distance is about 0 (the nearest points lie on both walls), so the core of the part comes
+// after its skin, whose two sides the sweep has then joined around the part's rim, and the
+// core closes a loop and is cut. A depth that grows inwards keeps the part whole.
 template <class Triangulation>
 std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
                                 const std::vector<char>& boundary, double relative_depth,
-                                std::vector<signed char>& signs, std::vector<double>& values)
+                                std::vector<signed char>& signs, std::vector<double>& values,
+                                const std::vector<double>* inside_order = nullptr)
 {
   const double depth = relative_depth * median_surface_leaf_size(tr, xyz, signs);
   if(!(depth > 0)) return 0;
@@ -231,7 +240,7 @@ std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::
   const std::vector<signed char> before = signs;
   open_shallow_loops(tr, offsets, leaves, deep, 1, sets, signs, values);
   // the outside sweep only moved shallow vertices: the deep ones inside keep their components
-  open_shallow_loops(tr, offsets, leaves, deep, -1, sets, signs, values);
+  open_shallow_loops(tr, offsets, leaves, deep, -1, sets, signs, values, inside_order);
   std::size_t changed = 0;
   for(std::size_t v = 0; v < n; ++v) changed += signs[v] != before[v];
   return changed;
