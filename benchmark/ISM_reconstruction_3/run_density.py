@@ -36,7 +36,7 @@ LABELS = {"ism": "ISM (defaults)", "poisson_jet_mst": "Poisson + jet + MST"}
 
 def parse_args():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", required=True, help="CMake build directory (with the benchmark built)")
+    ap.add_argument("--build", help="CMake build directory (with the benchmark built)")
     ap.add_argument("--tarball", default="/usr/share/doc/libcgal-dev/data.tar.gz")
     ap.add_argument("--out", default=os.path.dirname(HERE), help="output directory (default: benchmark/)")
     ap.add_argument("--mesh", default="bunny00")
@@ -46,7 +46,11 @@ def parse_args():
     ap.add_argument("--timeout", type=float, default=300)
     ap.add_argument("--noise", type=float, default=0.0, help="gaussian noise, as a fraction of the diagonal")
     ap.add_argument("--name", default="density", help="base name of the outputs")
-    return ap.parse_args()
+    ap.add_argument("--replot", action="store_true", help="rewrite NAME.md from NAME.jsonl without running")
+    args = ap.parse_args()
+    if not args.replot and not args.build:
+        ap.error("--build is required (or --replot)")
+    return args
 
 
 def main():
@@ -54,9 +58,15 @@ def main():
     sizes = [int(n) for n in args.points.split(",")]
     seeds = [int(s) for s in args.seeds.split(",")]
     methods = args.methods.split(",")
-    exe = benchmark_executable(args.build, "run_density.py")
     started = time.strftime("%Y-%m-%d %H:%M")
     rows = []
+    jsonl = os.path.join(args.out, args.name + ".jsonl")
+    if args.replot:
+        with open(jsonl) as f:
+            rows = [json.loads(line) for line in f if line.strip()]
+        write_markdown(args, rows, started + ", replotted")
+        return
+    exe = benchmark_executable(args.build, "run_density.py")
     with tempfile.TemporaryDirectory(prefix="ism_density_") as work:
         extract(args.tarball, [args.mesh], work)
         mesh = os.path.join(work, args.mesh + ".off")
@@ -70,13 +80,22 @@ def main():
                     rows.append(r)
                     print("%-16s %6d seed %d %s" % (m, n, s, {k: r.get(k) for k in ("status", "genus", "inout_far")}),
                           flush=True)
-    with open(os.path.join(args.out, args.name + ".jsonl"), "w") as f:
+    with open(jsonl, "w") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
-    noise = (", gaussian noise of %g %% of the diagonal" % (100 * args.noise)) if args.noise > 0 else ""
-    title = ("how often each method is right at %g %% noise" % (100 * args.noise)) if args.noise > 0 \
+    write_markdown(args, rows, started)
+
+
+def write_markdown(args, rows, started):
+    """NAME.md: one row per size and method, over the seeds found in `rows`."""
+    sizes = sorted({r["n_points"] for r in rows})
+    methods = [m for m in args.methods.split(",") if any(r["method"] == m for r in rows)]
+    seeds = sorted({r["seed"] for r in rows})
+    level = args.noise or (rows[0].get("noise") or 0 if rows else 0)
+    noise = (", gaussian noise of %g %% of the diagonal" % (100 * level)) if level > 0 else ""
+    title = ("how often each method is right at %g %% noise" % (100 * level)) if level > 0 \
         else "how few points each method needs"
-    md = ["# ISM_reconstruction_3 %s sweep: %s" % ("noise" if args.noise > 0 else "density", title), "",
+    md = ["# ISM_reconstruction_3 %s sweep: %s" % ("noise" if level > 0 else "density", title), "",
           "`%s.off` (libcgal-demo's data tarball) sampled by N area-weighted points without normals%s, seeds %s, "
           "reconstructed by each method and scored by `benchmark_reconstruction` "
           "(`benchmark/ISM_reconstruction_3/run_density.py`, %s). Poisson gets the normals CGAL users would give "
@@ -97,16 +116,22 @@ def main():
                 md.append("| %s | %s | 0 of %d | 0 | | | | |" % ("{:,}".format(n), LABELS.get(m, m), len(runs)))
                 continue
             right = [r for r in ok if r["genus"] == r["truth_genus"] and r["components"] == r["truth_components"]]
-            far = [r["inout_far"] for r in ok]
-            perfect = [r for r in right if r["inout_far"] == 1.0]
+            # an open output (Poisson, now and then) has no inside: no in/out score
+            far = [r["inout_far"] for r in ok if r.get("inout_far") is not None]
+            perfect = [r for r in right if r.get("inout_far") == 1.0]
             md.append("| %s | %s | %d of %d | %d | %s | %s / %s | %.3f | %.2f |" % (
                 "{:,}".format(n), LABELS.get(m, m), len(right), len(runs), len(perfect),
                 ", ".join(str(r["genus"]) if r.get("status") == "ok" else r.get("status") for r in runs),
-                pct(min(far), 3), pct(sum(far) / len(far), 3),
-                100.0 * sum(r["dist_mean"] for r in ok) / len(ok), sum(r["time_total"] for r in ok) / len(ok)))
+                pct(min(far) if far else None, 3), pct(sum(far) / len(far) if far else None, 3),
+                mean_pct([r.get("dist_mean") for r in ok]), sum(r["time_total"] for r in ok) / len(ok)))
     with open(os.path.join(args.out, args.name + ".md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("wrote %s" % os.path.join(args.out, args.name + ".md"))
+
+
+def mean_pct(values):
+    values = [v for v in values if v is not None]
+    return 100.0 * sum(values) / len(values) if values else float("nan")
 
 
 def compact(seeds):
