@@ -29,12 +29,11 @@ set_tests_properties(robustness_memory PROPERTIES LABELS "robustness;no_sanitize
 # ordered by the tangent-plane depth on noisy points): before, 1 query of the 46k farther
 # than 1 % of the diagonal was on the wrong side, 1.14 % from the truth, where the core of
 # an ear's base was cut (8 wrong queries before the escape rays of session 11, 20-35 before
-# the jet smoothing of noisy points).
+# the jet smoothing of noisy points). The ears are 1.9 % of the diagonal thick, about four
+# times the noise; more or fewer smoothing passes or neighbours, surface refinement passes or
+# a larger thin-handle depth leave 0-4 such queries per sampling, with genus 1-3 on some.
 # Known failure of the method, kept visible but not run by default (ctest reports it as
-# disabled): non-uniform sampling, below. The ears are 1.9 % of the diagonal
-# thick, about four times the noise; more or fewer smoothing passes or neighbours, surface
-# refinement passes or a larger thin-handle depth leave 0-4 such queries per sampling, with
-# genus 1-3 on some. Non-uniform sampling: genus 1 and 6 far-wrong queries (9 before the
+# disabled): non-uniform sampling, genus 1 and 6 far-wrong queries (9 before the
 # escape rays), dents at the ears and the head of the sparse half; genus 5 and 48 before the
 # local voting radius of the tangent planes (session 9). It has 36k points in all, so its
 # sparse half is 5.5 times sparser than the 36k bunny (points about an ear's thickness
