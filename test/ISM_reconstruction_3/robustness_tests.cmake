@@ -43,6 +43,6 @@ set_tests_properties(robustness_memory PROPERTIES LABELS "robustness;no_sanitize
 # the same signs). The outliers case passes since the tangent-plane signs, the clean and
 # 0.25 % noise cases since the refinement of the leaves that miss the points.
 # One sampling per case: over 30 samplings (benchmark/noise_0.25.md, noise_0.5.md, session 13)
-# the bar is met far less often than these samplings suggest (README, "Noise sweep").
+# the bar is met far less often than these samplings suggest (README, "Measured" and "Known limitations").
 # Run them with: test_robustness <meshes> <tmp> <section>.
 set_tests_properties(robustness_nonuniform PROPERTIES DISABLED TRUE)
