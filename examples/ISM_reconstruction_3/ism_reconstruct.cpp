@@ -332,9 +332,14 @@ const std::vector<Option>& options()
                     "miss of the function at a point, relative to its leaf's longest edge, above which "
                     "the leaf is bisected"),
     ISM_INTEGER_OPTION("--escape-rays", escape_rays,
-                       "last, turn outside an inside vertex of the surface's leaves away from the points if "
+                       "turn outside an inside vertex of the surface's leaves away from the points if "
                        "this many rays from it, pointing away from its nearest point, all leave the box "
                        "without meeting a point; 0: never"),
+    Option{"--no-winding-number", "winding_number_signs", nullptr,
+           "do not re-sign, last, the vertices of the surface's leaves away from the points by the "
+           "winding number of the points (their normals oriented by the in/out function)",
+           [](Settings& s, const std::string&, const std::string&) { s.winding_number_signs = false; },
+           [](const Settings& s) { return std::string(s.winding_number_signs ? "on" : "off"); }},
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times; 0: never"),

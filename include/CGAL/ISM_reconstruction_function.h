@@ -23,6 +23,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
 #include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
+#include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -116,6 +117,7 @@ public:
     std::size_t number_of_handle_vertices = 0;
     std::size_t number_of_tangent_plane_vertices = 0;  ///< vertices whose side the oriented tangent planes changed
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected because F missed their points (`surface_refinement_passes`)
+    std::size_t number_of_winding_number_vertices = 0;  ///< vertices re-signed by the winding number of the points (`winding_number_signs`)
     std::size_t number_of_escaped_vertices = 0;  ///< inside vertices turned outside because rays from them leave the box (`escape_rays`)
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
@@ -267,12 +269,14 @@ public:
     if(m_settings.surface_refinement_passes > 0) refine_surface_leaves(neighbors, boundary, leaves);
     CGAL_ISM_TIMER_MARK(step, "surface refinement");
     if(m_settings.escape_rays > 0) remove_escaping_inside(neighbors, leaves, boundary);
+    CGAL_ISM_TIMER_MARK(step, "escape rays");
+    if(m_settings.winding_number_signs) sign_by_winding_number(neighbors, leaves, boundary);
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
     std::vector<float>().swap(m_voting_radius);
     m_point_neighbors.reset();
     std::vector<Cell_index>().swap(m_leaf_of_point);
-    CGAL_ISM_TIMER_MARK(step, "escape rays");
+    CGAL_ISM_TIMER_MARK(step, "winding number");
     m_stats.distance_time = timer.time();
     find_inner_point();
     return report(1.);
@@ -814,6 +818,73 @@ private:
         m_sign, m_value);
     m_stats.number_of_escaped_vertices = turned;
     if(turned > 0) remove_islands_and_thin_handles(leaves, boundary);
+  }
+
+  // The pockets that every local test confirms (winding_number.h says why), re-signed by the
+  // winding number of the points, their normals oriented by this function, in two stages:
+  // first only the vertices farther from the points than their spacing, then, to fill the
+  // rest of the pockets, outside vertices down to a quarter of it. After each stage the
+  // islands and thin handles are removed; a stage that leaves the surface with a lower Euler
+  // characteristic (a handle more, or a pocket's island kept by the removal) is undone.
+  // Measured on the bunny, 10 samplings each (far: queries farther than 1 % of the
+  // diagonal): one half ten times denser, genus 0 and no far query wrong on 6 instead of 0;
+  // gaussian noise of 0.5 % of the diagonal, on 9 instead of 6.
+  void sign_by_winding_number(const ISM_reconstruction_3::internal::Point_neighbors& neighbors,
+                              const Leaf_vertices& leaves, const std::vector<char>& boundary)
+  {
+    namespace I = ISM_reconstruction_3::internal;
+#ifdef CGAL_ISM_TIMER
+    CGAL::Real_timer step;
+    step.start();
+#endif
+    std::vector<float> spacing;
+    // the points that voted for the tangent planes have their normal (the PCA of the same 12
+    // points) oriented already
+    const std::vector<Xyz> dipoles = I::point_dipoles(m_points, neighbors, 12, [&](std::uint32_t i, const Xyz& n) {
+      if(!m_voting_normals.empty())
+      {
+        const std::array<float, 3>& m = m_voting_normals[i];
+        const double dot = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
+        if(dot != 0) return dot > 0 ? 1 : -1;
+      }
+      return int(I::ism_orientation_of(*this, m_points[i], n, leaf_of_point(i)).sign);
+    }, spacing);
+    CGAL_ISM_TIMER_MARK(step, "winding number: dipoles");
+    const I::Winding_number w(m_points, dipoles);
+    CGAL_ISM_TIMER_MARK(step, "winding number: octree");
+    if(m_depth.size() != m_value.size()) m_depth = m_value;
+    std::vector<std::uint64_t> edges;
+    const auto every_edge = [](std::uint64_t, std::uint64_t) { return true; };
+    long euler = 0;
+    bool euler_known = false;  // computed once a stage changes a sign (most runs change none)
+    I::Winding_number_rule rule;
+    I::Winding_number_cache cache(m_sign.size());
+    for(const double fill_reach : { 1., 0.25 })
+    {
+      rule.fill_reach = fill_reach;
+      const std::vector<signed char> old_sign = m_sign;
+      const std::vector<double> old_value = m_value, old_depth = m_depth;
+      const std::size_t changed =
+          I::sign_by_winding_number(leaves, m_vertex_xyz, neighbors, spacing, w, boundary, rule, cache, m_sign, m_value);
+      CGAL_ISM_TIMER_MARK(step, "winding number: signs");
+      if(changed == 0) continue;
+      if(!euler_known) euler = I::twice_euler_characteristic(leaves, {}, every_edge, old_sign, edges);
+      euler_known = true;
+      for(std::size_t v = 0; v < m_sign.size(); ++v)
+        if((m_sign[v] < 0) != (m_depth[v] < 0)) m_depth[v] = m_value[v];
+      remove_islands_and_thin_handles(leaves, boundary);
+      CGAL_ISM_TIMER_MARK(step, "winding number: islands and thin handles");
+      const long new_euler = I::twice_euler_characteristic(leaves, {}, every_edge, m_sign, edges);
+      if(new_euler < euler)
+      {
+        m_sign = old_sign;
+        m_value = old_value;
+        m_depth = old_depth;
+        continue;
+      }
+      euler = new_euler;
+      m_stats.number_of_winding_number_vertices += changed;
+    }
   }
 
   // per input point, its oriented normal if it votes, else 0 (12 bytes a point, kept from the

@@ -1,5 +1,5 @@
 // Tests of the internal algorithms on flat arrays: Ising annealing, marching
-// tetrahedra, Taubin smoothing, removal of thin handles.
+// tetrahedra, Taubin smoothing, removal of thin handles, escape rays, winding number.
 
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
@@ -9,6 +9,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
 #include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
+#include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -794,6 +795,92 @@ void escape_rays_test(const Tet_mesh& grid)
   CHECK(!internal::ray_escapes(neighbors, {{ 0., 0., 0. }}, {{ 0.6, 0., 0.8 }}, 0.05), "escape rays: a ray from a sphere's center leaves");
 }
 
+// The winding number of 20,000 points on a sphere of radius 0.5, normals oriented outwards:
+// the Barnes-Hut sum agrees with the direct one and is about 1 inside, 0 outside. The Euler
+// characteristic of the zero level set of a sphere, a torus and two spheres. Then a ball of
+// inside vertices with a dent drilled from outside to its centre (|y|, |z| < 0.15, x > 0):
+// the re-signing must fill the dent where it is farther from the points than their spacing,
+// turn no vertex outside the sphere inside, and keep the surface's Euler characteristic.
+void winding_number_test(const Tet_mesh& grid)
+{
+  std::vector<std::array<double, 3> > points;
+  add_sphere_points(points, 20000, 0.5);
+  const internal::Point_neighbors neighbors(points);
+  std::vector<float> spacing;
+  const std::vector<std::array<double, 3> > dipoles = internal::point_dipoles(
+      points, neighbors, 12, [&](std::uint32_t i, const std::array<double, 3>& n) {
+        return n[0] * points[i][0] + n[1] * points[i][1] + n[2] * points[i][2] > 0 ? 1 : -1;
+      }, spacing);
+  const internal::Winding_number w(points, dipoles);
+  auto direct = [&](const std::array<double, 3>& x) {
+    double sum = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const double d[3] = { points[i][0] - x[0], points[i][1] - x[1], points[i][2] - x[2] };
+      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      sum += (d[0] * dipoles[i][0] + d[1] * dipoles[i][1] + d[2] * dipoles[i][2]) / (r2 * std::sqrt(r2));
+    }
+    return sum / (4. * 3.14159265358979323846);
+  };
+  for(const double r : { 0., 0.2, 0.4, 0.45, 0.55, 0.6, 0.8, 1.5 })
+  {
+    const std::array<double, 3> x = {{ r * 0.6, r * 0.48, r * 0.64 }};
+    const double fast = w(x), slow = direct(x);
+    // a far node counts as one dipole at its centroid: a few per cent, far inside the margin of 0.3 / 0.7
+    CHECK(std::abs(fast - slow) < 0.04, "winding number: Barnes-Hut " << fast << " vs direct " << slow << " at radius " << r);
+    if(r < 0.45) CHECK(std::abs(fast - 1) < 0.05, "winding number: " << fast << " at radius " << r << " inside the sphere");
+    if(r > 0.55) CHECK(std::abs(fast) < 0.05, "winding number: " << fast << " at radius " << r << " outside the sphere");
+  }
+  CHECK(std::abs(spacing[0] - 0.0245) < 0.005, "winding number: spacing " << spacing[0] << " of 20,000 points on the sphere");
+  CHECK(internal::Winding_number(points, std::vector<std::array<double, 3> >(points.size(), {{ 0., 0., 0. }}))({{ 0., 0., 0. }}) == 0,
+        "winding number: no dipoles must give 0");
+
+  const Tet_mesh_leaves leaves{grid};
+  const std::size_t nv = grid.points.size();
+  std::vector<std::uint64_t> edges;
+  const auto every_edge = [](std::uint64_t, std::uint64_t) { return true; };
+  auto signs_of = [&](double (*f)(const Point&)) {
+    std::vector<signed char> s(nv);
+    for(std::size_t v = 0; v < nv; ++v) s[v] = f(grid.points[v]) < 0 ? -1 : 1;
+    return s;
+  };
+  CHECK(internal::twice_euler_characteristic(leaves, {}, every_edge, signs_of(sphere_value), edges) == 4, "Euler characteristic: sphere");
+  CHECK(internal::twice_euler_characteristic(leaves, {}, every_edge, signs_of(torus_value), edges) == 0, "Euler characteristic: torus");
+  CHECK(internal::twice_euler_characteristic(leaves, {}, every_edge, signs_of(two_spheres_value), edges) == 8, "Euler characteristic: two spheres");
+
+  std::vector<signed char> signs(nv, 1);
+  std::vector<double> values(nv, 1.);
+  std::vector<char> fixed(nv, 0);
+  auto radius = [](const Point& p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); };
+  auto in_dent = [](const Point& p) { return p[0] > 0 && std::abs(p[1]) < 0.15 && std::abs(p[2]) < 0.15; };
+  std::size_t dent = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const Point& p = grid.points[v];
+    if(radius(p) < 0.5 && !in_dent(p)) { signs[v] = -1; values[v] = -1.; }
+    if(radius(p) < 0.5 - 0.03 && in_dent(p)) ++dent;
+    for(int d = 0; d < 3; ++d) fixed[v] = fixed[v] || std::abs(std::abs(p[d]) - 1) < 1e-9;
+  }
+  const std::vector<signed char> before = signs;
+  const long euler = internal::twice_euler_characteristic(leaves, {}, every_edge, signs, edges);
+  internal::Winding_number_cache cache(nv);
+  const std::size_t changed = internal::sign_by_winding_number(leaves, grid.points, neighbors, spacing, w, fixed,
+                                                               internal::Winding_number_rule(), cache, signs, values);
+  std::size_t dent_left = 0, wrong = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const Point& p = grid.points[v];
+    if(radius(p) < 0.5 - 0.03 && in_dent(p) && signs[v] > 0) ++dent_left;
+    if(radius(p) > 0.5 && signs[v] < 0) ++wrong;
+    if(before[v] != signs[v]) CHECK(values[v] * signs[v] > 0, "winding number: a re-signed vertex's value has the wrong sign");
+  }
+  CHECK(dent > 50, "winding number: test set-up, " << dent << " dent vertices");
+  CHECK(dent_left == 0, "winding number: " << dent_left << " of the " << dent << " dent vertices deeper than the spacing left outside");
+  CHECK(wrong == 0, "winding number: " << wrong << " vertices outside the sphere turned inside");
+  CHECK(changed > 0 && internal::twice_euler_characteristic(leaves, {}, every_edge, signs, edges) == euler,
+        "winding number: " << changed << " vertices re-signed, the surface's Euler characteristic changed");
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -830,6 +917,9 @@ int main()
 
   std::cout << "Escape rays" << std::endl;
   escape_rays_test(kuhn_grid(40, false));
+
+  std::cout << "Winding number" << std::endl;
+  winding_number_test(kuhn_grid(40, false));
 
   std::cout << "Misfit leaves" << std::endl;
   misfit_leaves_test();

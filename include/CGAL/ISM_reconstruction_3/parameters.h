@@ -62,6 +62,7 @@ enum point_smoothing_neighbors_t { point_smoothing_neighbors };
 enum point_smoothing_noise_t { point_smoothing_noise };
 enum memory_limit_t { memory_limit };
 enum escape_rays_t { escape_rays };
+enum winding_number_signs_t { winding_number_signs };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -109,6 +110,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_neighbors)
 CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_noise)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
+CGAL_ISM_ADD_NAMED_PARAMETER(winding_number_signs)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

@@ -99,18 +99,8 @@ std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escap
   std::size_t turned = 0;
   for(int round = 0; round < 10; ++round)
   {
-    std::vector<std::uint32_t> candidates;
-    for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
-    {
-      const auto& v = leaves.vertices(typename Leaves::Cell_index(c));
-      if(!is_crossed(v, signs)) continue;
-      for(int l = 0; l < 4; ++l)
-        if(signs[v[l]] < 0 && !fixed[v[l]] && !tested[v[l]])
-        {
-          tested[v[l]] = 1;
-          candidates.push_back(std::uint32_t(v[l]));
-        }
-    }
+    const std::vector<std::uint32_t> candidates =
+        untested_vertices_of_crossed_leaves(leaves, signs, tested, [&](std::uint32_t v) { return signs[v] < 0 && !fixed[v]; });
     std::vector<double> outside_value(candidates.size(), 0.);  // 0: stays inside
     for_each_index(candidates.size(), [&](std::size_t j) {
       const Escape_xyz& x = vertex_xyz[candidates[j]];

@@ -28,6 +28,28 @@ bool is_crossed(const Vertices& v, const std::vector<signed char>& signs)
   return signs[v[0]] != signs[v[1]] || signs[v[0]] != signs[v[2]] || signs[v[0]] != signs[v[3]];
 }
 
+// The vertices of the leaves the surface crosses that are `wanted` and not `tested` yet,
+// marked tested: one round of the passes that re-sign the surface's vertices and then test
+// the vertices their changes expose.
+template <class Leaves, class Wanted>
+std::vector<std::uint32_t> untested_vertices_of_crossed_leaves(const Leaves& leaves, const std::vector<signed char>& signs,
+                                                               std::vector<char>& tested, const Wanted& wanted)
+{
+  std::vector<std::uint32_t> found;
+  for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
+  {
+    const auto& v = leaves.vertices(typename Leaves::Cell_index(c));
+    if(!is_crossed(v, signs)) continue;
+    for(int l = 0; l < 4; ++l)
+      if(!tested[v[l]] && wanted(std::uint32_t(v[l])))
+      {
+        tested[v[l]] = 1;
+        found.push_back(std::uint32_t(v[l]));
+      }
+  }
+  return found;
+}
+
 // The longest edge of the leaf with vertices `v` (positions `xyz`): the size of a leaf.
 template <class Vertices>
 double longest_edge(const Vertices& v, const std::vector<std::array<double, 3> >& xyz)

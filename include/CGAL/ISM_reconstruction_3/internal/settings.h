@@ -66,9 +66,12 @@ struct Settings
   int surface_refinement_passes = 2;
   /*! the miss of F at a point, relative to the longest edge of its leaf, above which the leaf is bisected */
   double surface_refinement_tolerance = 0.05;
-  /*! last, an inside vertex of the surface's leaves away from the points is turned outside if this many rays
+  /*! then, an inside vertex of the surface's leaves away from the points is turned outside if this many rays
       from it, pointing away from its nearest point, all leave the box without meeting a point; 0: never (the paper) */
   int escape_rays = 5;
+  /*! last, the vertices of the surface's leaves away from the points are re-signed by the winding number of the
+      points, their normals oriented by F, where it is clearly inside or outside; false: never (the paper) */
+  bool winding_number_signs = true;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
@@ -95,6 +98,7 @@ struct Settings
     s.tangent_plane_signs = false;
     s.surface_refinement_passes = 0;
     s.escape_rays = 0;
+    s.winding_number_signs = false;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
     return s;
@@ -187,6 +191,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.surface_refinement_tolerance =
       choose_parameter(get_parameter(np, inp::surface_refinement_tolerance), d.surface_refinement_tolerance);
   s.escape_rays = choose_parameter(get_parameter(np, inp::escape_rays), d.escape_rays);
+  s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
   s.point_smoothing_iterations =
       choose_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations);
   s.point_smoothing_neighbors = choose_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors);
