@@ -859,7 +859,7 @@ private:
     long euler = 0;
     bool euler_known = false;  // computed once a stage changes a sign (most runs change none)
     I::Winding_number_rule rule;
-    I::Winding_number_cache cache(m_sign.size());
+    I::Winding_number_cache cache(leaves, boundary);
     for(const double fill_reach : { 1., 0.25 })
     {
       rule.fill_reach = fill_reach;

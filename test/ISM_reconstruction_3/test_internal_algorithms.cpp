@@ -863,7 +863,7 @@ void winding_number_test(const Tet_mesh& grid)
   }
   const std::vector<signed char> before = signs;
   const long euler = internal::twice_euler_characteristic(leaves, {}, every_edge, signs, edges);
-  internal::Winding_number_cache cache(nv);
+  internal::Winding_number_cache cache(leaves, fixed);
   const std::size_t changed = internal::sign_by_winding_number(leaves, grid.points, neighbors, spacing, w, fixed,
                                                                internal::Winding_number_rule(), cache, signs, values);
   std::size_t dent_left = 0, wrong = 0;

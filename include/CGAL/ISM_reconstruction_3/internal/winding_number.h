@@ -12,6 +12,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
+#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <array>
@@ -71,19 +72,14 @@ public:
     while(top > 0)
     {
       const Node& node = m_nodes[stack[--top]];
-      const double d2 = squared_distance(x, node.centroid);
-      if(node.first_child == 0 || d2 > m_opening * m_opening * node.radius * node.radius)
-      {
-        if(node.first_child == 0 && !(d2 > m_opening * m_opening * node.radius * node.radius))
-          for(std::uint32_t i = node.begin; i < node.end; ++i) sum += dipole_term(x, m_points[i], m_dipoles[i]);
-        else
-          sum += dipole_term(x, node.centroid, node.dipole);
-        continue;
-      }
-      for(std::uint32_t c = node.first_child; c < node.first_child + node.children; ++c)
-        stack[top++] = c;
+      if(squared_distance(x, node.centroid) > m_opening * m_opening * node.radius * node.radius)
+        sum += dipole_term(x, node.centroid, node.dipole);
+      else if(node.first_child == 0)
+        for(std::uint32_t i = node.begin; i < node.end; ++i) sum += dipole_term(x, m_points[i], m_dipoles[i]);
+      else
+        for(std::uint32_t c = node.first_child; c < node.first_child + node.children; ++c) stack[top++] = c;
     }
-    return sum / (4. * 3.141592653589793);
+    return sum / (4. * CGAL_PI);
   }
 
 private:
@@ -212,7 +208,7 @@ std::vector<std::array<double, 3> > point_dipoles(const std::vector<std::array<d
     if(moments.count() < k || !moments.fit(fit)) return;
     const std::array<double, 3> n = {{ double(fit.normal[0]), double(fit.normal[1]), double(fit.normal[2]) }};
     const int s = orient(std::uint32_t(i), n);
-    const double area = 3.141592653589793 * farthest2 / k;
+    const double area = CGAL_PI * farthest2 / k;
     for(int d = 0; d < 3; ++d) dipoles[i][d] = s * area * n[d];
   });
   return dipoles;
@@ -259,15 +255,21 @@ struct Winding_number_rule
   double fill_reach = 0.25, cut_reach = 1.;
 };
 
-// Per vertex, the distance to its nearest point, that point's spacing and the winding number,
-// kept from one call of `sign_by_winding_number` to the next (NaN: not computed yet): the
-// second stage tests the same vertices as the first.
+// What the calls of `sign_by_winding_number` on the same leaves share (the second stage tests
+// the same vertices as the first): the leaves around every vertex not `fixed`, and per vertex
+// the distance to its nearest point, that point's spacing and the winding number (NaN: not
+// computed yet).
 struct Winding_number_cache
 {
+  std::vector<std::uint32_t> offsets, around;  // leaves_around_vertices()
   std::vector<float> distance, spacing, w;
-  explicit Winding_number_cache(std::size_t n)
-    : distance(n, std::numeric_limits<float>::quiet_NaN()), spacing(n, 0.f), w(n, std::numeric_limits<float>::quiet_NaN())
-  {}
+  template <class Leaves>
+  Winding_number_cache(const Leaves& leaves, const std::vector<char>& fixed)
+    : distance(fixed.size(), std::numeric_limits<float>::quiet_NaN()), spacing(fixed.size(), 0.f),
+      w(fixed.size(), std::numeric_limits<float>::quiet_NaN())
+  {
+    leaves_around_vertices(leaves, fixed, offsets, around);
+  }
 };
 
 // Re-signs, by the winding number `w`, the vertices of the leaves the surface crosses that
@@ -285,8 +287,8 @@ std::size_t sign_by_winding_number(const Leaves& leaves, const std::vector<std::
                                    const Winding_number_rule& rule, Winding_number_cache& cache,
                                    std::vector<signed char>& signs, std::vector<double>& values)
 {
-  std::vector<std::uint32_t> offsets, around;
-  leaves_around_vertices(leaves, fixed, offsets, around);
+  const std::vector<std::uint32_t>& offsets = cache.offsets;
+  const std::vector<std::uint32_t>& around = cache.around;
   std::vector<char> tested(signs.size(), 0), in_cluster(signs.size(), 0);
   std::vector<std::int32_t> slot(signs.size(), -1);
   std::vector<std::uint32_t> cell_stamp(leaves.number_of_cells(), 0), cells;
