@@ -497,13 +497,25 @@ struct Tet_mesh_leaves
 
 // A ball drilled through by a hole one grid vertex wide whose vertices lie near the surface
 // (|value| 0.03), all others far from it: a handle only vertices on the surface hold open,
-// filled. (With true distances the ring around the hole is shallow too, and the inside
-// sweep then cuts loops that later vertices would have closed: see the note of issue 4.)
+// filled.
 double drilled_sphere_value(const Point& p)
 {
   const double ball = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 0.63;
   if(ball > 0) return 1.;
   return std::sqrt(p[0] * p[0] + p[1] * p[1]) < 0.01 ? 0.03 : -1.;
+}
+
+// The same hole (a cylinder of radius h/2 around the z axis) with true distances: the ring
+// of vertices around it is shallow too, so the inside sweep closes rings around vertices it
+// visits later and cuts them; the restore pass of open_shallow_loops() must give them back
+// (without it the handle stays: chi 0).
+double drilled_sphere_distance(const Point& p)
+{
+  const double ball = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 0.63;
+  if(ball > 0) return ball;
+  const double r = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+  if(r < 0.01) return 0.025;
+  return -(std::min)(-ball, r - 0.025);
 }
 
 void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::string& name, long euler_before,
@@ -534,6 +546,49 @@ void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::s
                                      << euler_after);
   std::cout << "  " << name << ": " << changed << " vertices changed side, chi " << euler_before << " -> " << c.euler
             << std::endl;
+}
+
+// A flat ring of 8 grid vertices around a centre, on one side, all else on the other; the
+// sweep visits the ring first (deeper), so the last ring vertex closes a loop around the
+// centre and is cut. With the centre on the ring's side, visited after, that loop is filled
+// and the restore pass must give the cut vertex back: nothing changes side. Without it (the
+// centre on the other side) the ring is a real loop of shallow vertices and stays cut.
+void ring_restore_test(bool with_centre)
+{
+  const int n = 8;
+  const Tet_mesh m = kuhn_grid(n, false);
+  auto id = [&](int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; };
+  const std::size_t nv = m.points.size();
+  std::vector<signed char> signs(nv, 1);
+  std::vector<double> values(nv, 1.);
+  std::vector<std::uint32_t> plate;
+  for(int j = 3; j <= 5; ++j)
+    for(int i = 3; i <= 5; ++i)
+    {
+      const bool centre = i == 4 && j == 4;
+      if(centre && !with_centre) continue;
+      const std::uint32_t v = std::uint32_t(id(i, j, 4));
+      plate.push_back(v);
+      signs[v] = -1;
+      values[v] = centre ? -0.1 : -0.2;  // the ring deeper than the centre
+    }
+  const std::vector<signed char> before = signs;
+  std::vector<char> skip(nv, 0), deep(nv, 0);
+  std::vector<std::uint32_t> offsets, leaves;
+  const Tet_mesh_leaves tr{m};
+  internal::leaves_around_vertices(tr, skip, offsets, leaves);
+  internal::Disjoint_sets sets(nv);
+  internal::open_shallow_loops(tr, offsets, leaves, deep, -1, sets, signs, values);
+  std::size_t changed = 0;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    changed += signs[v] != before[v];
+    CHECK((values[v] < 0) == (signs[v] < 0), "ring: value and sign of vertex " << v << " disagree");
+  }
+  const std::string name = with_centre ? "ring around a later centre" : "ring around nothing";
+  CHECK(changed == (with_centre ? 0u : 1u), name << ": " << changed << " vertices changed side, expected "
+                                                 << (with_centre ? 0 : 1));
+  std::cout << "  " << name << ": " << changed << " of " << plate.size() << " vertices changed side" << std::endl;
 }
 
 double radius_variance(const std::vector<Point>& pts, const Point& c)
@@ -911,6 +966,9 @@ int main()
   std::cout << "Thin handles" << std::endl;
   thin_handle_test(grid, drilled_sphere_value, "sphere drilled by a thin hole", 0, 2);
   thin_handle_test(grid, torus_value, "torus with a thick tube", 0, 0);
+  thin_handle_test(grid, drilled_sphere_distance, "sphere drilled by a thin hole, true distances", 0, 2);
+  ring_restore_test(true);
+  ring_restore_test(false);
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();
