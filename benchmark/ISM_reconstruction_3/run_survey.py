@@ -82,6 +82,7 @@ def main():
             rows.append(r)
             print("%-22s %s" % (n, {k: r.get(k) for k in ("status", "genus", "components", "inout_far", "time_total")}),
                   flush=True)
+    os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "survey.jsonl"), "w") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
