@@ -204,7 +204,7 @@ void open_shallow_loops(const Triangulation& tr, const std::vector<std::uint32_t
   }
   // A loop closed by v may be one the shallower vertices after it fill: a ring around a
   // vertex the order put later. So the cut vertices are offered again, deepest first,
-  // until none joins; the same test lets them in, so they open no loop the sweep opened.
+  // until none joins; the same test lets them in, so none closes a loop the sweep opened.
   // Measured on the 36k bunny, 20 samplings, the robustness bar (genus 0, every query
   // farther than 1 % of the diagonal right): 0.25 % noise 15 -> 20, 0.5 % 17 -> 18 of 20
   // (the misses were dents where the core of an ear was cut).
