@@ -274,7 +274,8 @@ const std::vector<Option>& options()
 {
   static const std::vector<Option> table = {
     ISM_INTEGER_OPTION("--maximum-depth", maximum_depth,
-                       "deepest level of a cell of the triangulation (the paper's maximum level)"),
+                       "deepest level of a cell of the triangulation (the paper's maximum level; "
+                       "far outliers add 3 levels per doubling of the points' extent, up to 48)"),
     ISM_INTEGER_OPTION("--min-points-per-cell", min_points_per_cell,
                        "a cell is fitted and subdivided only with at least this many points"),
     ISM_REAL_OPTION("--coplanarity-threshold", coplanarity_threshold,
@@ -922,16 +923,21 @@ int run(int argc, char** argv)
   const double write_time = timer.time();
   progress.done();
 
-  if(cl.quiet) return SUCCESS;
   const auto& stats = function->statistics();
+  if(stats.added_levels > 0 && stats.deepest_level >= 48)
+    std::cerr << "ism_reconstruct: warning: far outliers make the points' extent so much larger than that of "
+                 "98 % of them that the leaves reached the deepest level allowed (48): the surface may be "
+                 "coarse; remove the far outliers first\n";
+  if(cl.quiet) return SUCCESS;
   const Topology topo = topology(mesh);
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   std::ostringstream os;
   os << std::fixed << std::setprecision(3);
   os << "input:       " << cl.input << " (" << stats.number_of_points << " points)\n"
      << "leaves:      " << stats.number_of_leaves << " (" << stats.number_of_vertices << " vertices, "
-     << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level << ", "
-     << stats.number_of_topology_passes << " topology passes)\n"
+     << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level
+     << (stats.added_levels > 0 ? " (" + std::to_string(stats.added_levels) + " levels added for far outliers)" : std::string())
+     << ", " << stats.number_of_topology_passes << " topology passes)\n"
      << "time (s):    reading     " << std::setw(8) << read_time << "\n"
      << "             refinement  " << std::setw(8) << stats.refinement_time << "\n"
      << "             topology    " << std::setw(8) << stats.topology_time << "\n"

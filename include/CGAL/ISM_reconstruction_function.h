@@ -122,6 +122,9 @@ public:
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
     int deepest_level = 0;
+    /// levels added to `maximum_depth` (up to 48) because far outliers make the points' extent
+    /// 2^(n/3) times that of 98 % of them
+    int added_levels = 0;
     double final_energy = 0, all_outside_energy = 0;  ///< Ising energies; all-outside lower means the model failed
   };
   /// @}
@@ -132,6 +135,8 @@ private:
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
   std::vector<Xyz> m_given_points;  // the points before a point smoothing changed m_points
+  double m_extent_ratio = 1;  // the points' extent over that of their bulk (point_input.h)
+  int m_maximum_depth = 24;   // maximum_depth and the levels far outliers added
   // the k nearest points of m_points, from the noise measure to the end of the distance stage
   // (shared, as m_tr, so that the function stays copyable)
   std::shared_ptr<const ISM_reconstruction_3::internal::Point_neighbors> m_point_neighbors;
@@ -380,6 +385,11 @@ private:
   {
     namespace I = ISM_reconstruction_3::internal;
     const I::Oriented_box box = I::bounding_parallelepiped(m_points, m_settings.box_margin);
+    // a few far outliers widen the box: the levels they cost are given back, so that one
+    // stray point 100 times farther than the object does not leave it 150 vertices
+    m_extent_ratio = I::extent_over_bulk_extent(m_points);
+    m_stats.added_levels = (std::min)(I::far_outlier_levels(m_extent_ratio), 48 - m_settings.maximum_depth);
+    m_maximum_depth = m_settings.maximum_depth + m_stats.added_levels;
     m_tr.reset(new Triangulation(Point(box.origin[0], box.origin[1], box.origin[2]),
                                  Vector(box.axis[0][0], box.axis[0][1], box.axis[0][2]),
                                  Vector(box.axis[1][0], box.axis[1][1], box.axis[1][2]),
@@ -569,7 +579,7 @@ private:
   // the stop test: maximum level, minimum number of points, coplanarity error
   bool stop(Cell_index c) const
   {
-    return m_tr->level(c) >= m_settings.maximum_depth || count(c) < std::size_t(m_settings.min_points_per_cell) ||
+    return m_tr->level(c) >= m_maximum_depth || count(c) < std::size_t(m_settings.min_points_per_cell) ||
            m_fit[c].coplanarity_error < m_settings.coplanarity_threshold;
   }
 
@@ -927,7 +937,7 @@ private:
       const std::vector<Cell_index> misfit = I::misfit_leaves(
           tr, m_vertex_xyz, m_points, [&](std::uint32_t i) { return leaf_of_point(i); },
           [&](Cell_index c, const Xyz& x) { return interpolate(c, x); },
-          m_settings.surface_refinement_tolerance, 3., m_settings.maximum_depth);
+          m_settings.surface_refinement_tolerance, 3., m_maximum_depth);
       CGAL_ISM_TIMER_MARK(step, "surface refinement: misfit leaves " + std::to_string(misfit.size()));
       if(misfit.empty()) break;
       m_stats.number_of_misfit_leaves += misfit.size();
@@ -979,7 +989,8 @@ private:
       if(m_value[v] < m_value[best]) best = v;
     if(m_value.empty() || m_value[best] >= 0)
       throw std::runtime_error("ISM reconstruction: no vertex was found inside the surface "
-                               "(the points may not sample a closed surface densely enough)");
+                               "(the points may not sample a closed surface densely enough)" +
+                               ISM_reconstruction_3::internal::far_outlier_hint(m_extent_ratio));
     m_inner_point = m_tr->point(Vertex_index(best));
   }
 

@@ -61,6 +61,47 @@ inline Principal_axes principal_axes(const std::vector<Xyz>& points)
   return pa;
 }
 
+// How many times the points' extent exceeds that of their bulk, 98 % of them along each
+// axis (the longest of either): a few far outliers make the box that much larger, and the
+// leaves near the surface that much coarser at the same level.
+inline double extent_over_bulk_extent(const std::vector<Xyz>& points)
+{
+  if(points.size() < 100) return 1;
+  std::vector<double> t(points.size());
+  double all = 0, bulk = 0;
+  const std::size_t k = points.size() / 100;
+  for(int d = 0; d < 3; ++d)
+  {
+    for(std::size_t i = 0; i < points.size(); ++i) t[i] = points[i][d];
+    const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
+    all = (std::max)(all, *hi - *lo);
+    std::nth_element(t.begin(), t.begin() + k, t.end());
+    const double low = t[k];
+    std::nth_element(t.begin(), t.end() - 1 - k, t.end());
+    bulk = (std::max)(bulk, t[t.size() - 1 - k] - low);
+  }
+  const double ratio = all / bulk;  // inf or NaN when DBL_MAX and -DBL_MAX overflow the extent
+  return ratio > 1 ? (std::min)(ratio, 1e300) : 1;
+}
+
+// The levels to add to maximum_depth so that the leaves can reach near the bulk of the
+// points the size that many levels give without the outliers (three bisections halve the
+// edges): none for an ordinary point set, whose ratio is below 2.
+inline int far_outlier_levels(double extent_ratio)
+{
+  return extent_ratio < 2 ? 0 : 3 * int(std::floor(std::log2((std::min)(extent_ratio, 1e15))));
+}
+
+// Added to the message of a refusal (a line, a plane, no inside) when far outliers are the
+// likely cause.
+inline std::string far_outlier_hint(double extent_ratio)
+{
+  if(extent_ratio < 1e3) return std::string();
+  return "; 98 % of the points span " + std::to_string(int(std::floor(std::log10(extent_ratio)))) +
+         " orders of magnitude less than all of them: remove the far outliers first "
+         "(e.g. CGAL::remove_outliers())";
+}
+
 // Refuses, with a message, what cannot bound a volume: no points, non-finite
 // coordinates, too few distinct points, all points on a line or a plane.
 inline void check_point_set(const std::vector<Xyz>& points)
@@ -85,10 +126,13 @@ inline void check_point_set(const std::vector<Xyz>& points)
   // duplicates weigh the variances but cannot make a zero one positive, or the reverse
   const Principal_axes pa = principal_axes(points);
   const double largest = pa.variance[2];
+  // a point 1e10 away from a unit sphere makes the sphere a line to these variances: say so
   if(pa.variance[1] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a line; they cannot bound a volume");
+    throw std::invalid_argument("ISM reconstruction: all points lie on a line; they cannot bound a volume" +
+                                far_outlier_hint(extent_over_bulk_extent(points)));
   if(pa.variance[0] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a plane; they cannot bound a volume");
+    throw std::invalid_argument("ISM reconstruction: all points lie on a plane; they cannot bound a volume" +
+                                far_outlier_hint(extent_over_bulk_extent(points)));
 }
 
 // The bounding cell (paper section 4): centred on the points, axes from PCA, scaled to
