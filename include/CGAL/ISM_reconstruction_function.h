@@ -658,7 +658,7 @@ private:
         inside_order[v] = m_sign[v] < 0 ? (std::max)(std::abs(depth[v]), std::abs(m_value[v])) : std::abs(depth[v]);
     }
     const std::size_t changed = I::remove_thin_handles(leaves, m_vertex_xyz, boundary, m_settings.thin_handle_depth,
-                                                       m_sign, depth, inside_order.empty() ? nullptr : &inside_order);
+                                                       m_sign, depth, inside_order.empty() ? nullptr : &inside_order, true);
     m_stats.number_of_handle_vertices += changed;
     if(changed > 0 && m_settings.minimum_island_fraction > 0)
       // vertices that changed side can leave a speck of one sign (bunny with 0.5 % noise,

@@ -519,7 +519,7 @@ double drilled_sphere_distance(const Point& p)
 }
 
 void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::string& name, long euler_before,
-                      long euler_after)
+                      long euler_after, double relative_depth = 0.58, bool local_size = false)
 {
   std::vector<double> values = sample(m, f);
   std::vector<Point> pts;
@@ -536,7 +536,8 @@ void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::s
       if(std::abs(std::abs(m.points[v][d]) - 1.) < 1e-9) boundary[v] = 1;
   }
   // the median longest edge of a Kuhn tet is the cube diagonal, h sqrt(3): depth 0.05 > 0.03
-  const std::size_t changed = internal::remove_thin_handles(Tet_mesh_leaves{m}, m.points, boundary, 0.58, signs, values);
+  const std::size_t changed = internal::remove_thin_handles(Tet_mesh_leaves{m}, m.points, boundary, relative_depth,
+                                                            signs, values, nullptr, local_size);
   for(std::size_t v = 0; v < values.size(); ++v)
     CHECK((values[v] < 0) == (signs[v] < 0), name << ": value and sign of vertex " << v << " disagree");
   internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
@@ -967,6 +968,11 @@ int main()
   thin_handle_test(grid, drilled_sphere_value, "sphere drilled by a thin hole", 0, 2);
   thin_handle_test(grid, torus_value, "torus with a thick tube", 0, 0);
   thin_handle_test(grid, drilled_sphere_distance, "sphere drilled by a thin hole, true distances", 0, 2);
+  // the local size: every Kuhn tet's longest edge is h sqrt(3), the median, so the smallest
+  // leaf at a vertex over 0.88 is 1.14 times it; at relative depth 0.32 the median alone
+  // gives 0.0277 < 0.03, the hole's depth (it stays), the local size 0.0315 (it is filled)
+  thin_handle_test(grid, drilled_sphere_value, "thin hole below the median depth", 0, 0, 0.32, false);
+  thin_handle_test(grid, drilled_sphere_value, "thin hole within the local leaves' depth", 0, 2, 0.32, true);
   ring_restore_test(true);
   ring_restore_test(false);
 

@@ -260,6 +260,11 @@ std::vector<float> smallest_leaf_at_vertices(const Triangulation& tr, const std:
 // `relative_depth` times the median size of the leaves it crosses hold open: first the
 // outside sweep (a tunnel through a thin plate is filled), then the inside sweep (a thin
 // bridge is cut). Returns the number of vertices that changed side.
+// `local_size`: where the leaves at a vertex are larger than the median (their smallest over
+// 0.88, as for the voting radius), their size instead: a sparser part of the sampling has
+// larger leaves, and its handles as deep as the dense part's, relative to its leaves, stayed
+// (bunny00, one half ten times denser: genus 1 on 2 of 20 samplings, 1 with this; 0.5 %
+// noise: 1 of 20, 0).
 // `inside_order`, if given, orders the inside sweep instead of |values| (which still decide
 // which vertices are shallow): between the two walls of a thin part the paper's plane
 // distance is about 0 (the nearest points lie on both walls), so the core of the part comes
@@ -269,14 +274,20 @@ template <class Triangulation>
 std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
                                 const std::vector<char>& boundary, double relative_depth,
                                 std::vector<signed char>& signs, std::vector<double>& values,
-                                const std::vector<double>* inside_order = nullptr)
+                                const std::vector<double>* inside_order = nullptr, bool local_size = false)
 {
-  const double depth = relative_depth * median_surface_leaf_size(tr, xyz, signs);
-  if(!(depth > 0)) return 0;
+  const double median = median_surface_leaf_size(tr, xyz, signs);
+  if(!(median > 0)) return 0;
   typedef typename Triangulation::Cell_index Cell_index;
   const std::size_t n = signs.size();
+  std::vector<float> local;
+  if(local_size) local = smallest_leaf_at_vertices(tr, xyz);
   std::vector<char> deep(n);
-  for(std::size_t v = 0; v < n; ++v) deep[v] = boundary[v] || !(std::abs(values[v]) < depth);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    const double size = local_size ? (std::max)(median, local[v] / 0.88) : median;
+    deep[v] = boundary[v] || !(std::abs(values[v]) < relative_depth * size);
+  }
   std::vector<std::uint32_t> offsets, leaves;  // only the shallow vertices are visited
   leaves_around_vertices(tr, deep, offsets, leaves);
   // the components of the deep vertices of each side, one pass over the leaves (in order
