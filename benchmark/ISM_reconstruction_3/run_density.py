@@ -80,6 +80,7 @@ def main():
                     rows.append(r)
                     print("%-16s %6d seed %d %s" % (m, n, s, {k: r.get(k) for k in ("status", "genus", "inout_far")}),
                           flush=True)
+    os.makedirs(args.out, exist_ok=True)
     with open(jsonl, "w") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")

@@ -318,7 +318,7 @@ const std::vector<Option>& options()
                     "largest inside cluster are flipped; 0: keep all"),
     ISM_REAL_OPTION("--thin-handle-depth", thin_handle_depth,
                     "a handle held open only by vertices nearer to the surface than this many times the "
-                    "median size of the leaves it crosses is removed (tunnel filled, else bridge cut); "
+                    "size of the leaves it crosses (the median, or the local one where larger) is removed (tunnel filled, else bridge cut); "
                     "0: keep all"),
     Option{"--no-tangent-planes", "tangent_plane_signs", nullptr,
            "keep the Ising sign of every vertex (the paper) instead of giving the vertices near the "

@@ -55,8 +55,8 @@ struct Settings
       memory, `ulimit -v` and `-d`, cgroup limits). A larger value does not raise those limits. */
   std::size_t memory_limit = 0;
   double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all
-  /*! a handle of the surface that only vertices nearer to it than this many times the median size of the leaves
-      it crosses hold open is removed (a tunnel filled, else a bridge cut); 0: keep all handles */
+  /*! a handle of the surface that only vertices nearer to it than this many times the size of the leaves
+      it crosses (the median, or the local one where larger) hold open is removed (a tunnel filled, else a bridge cut); 0: keep all handles */
   double thin_handle_depth = 0.15;
   /*! near the points, a vertex takes the side of the tangent planes of its nearest points,
       whose normals (PCA) are oriented by the in/out function; false: the Ising sign (the paper) */
