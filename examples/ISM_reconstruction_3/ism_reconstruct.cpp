@@ -924,10 +924,11 @@ int run(int argc, char** argv)
   progress.done();
 
   const auto& stats = function->statistics();
-  if(stats.added_levels > 0 && stats.deepest_level >= 48)
+  if(stats.added_levels > 0 && stats.deepest_level >= CGAL::ISM_reconstruction_3::Settings::deepest_level)
     std::cerr << "ism_reconstruct: warning: far outliers make the points' extent so much larger than that of "
-                 "98 % of them that the leaves reached the deepest level allowed (48): the surface may be "
-                 "coarse; remove the far outliers first\n";
+                 "98 % of them that the leaves reached the deepest level allowed ("
+              << CGAL::ISM_reconstruction_3::Settings::deepest_level
+              << "): the surface may be coarse; remove the far outliers first\n";
   if(cl.quiet) return SUCCESS;
   const Topology topo = topology(mesh);
   auto yes = [](bool b) { return b ? "yes" : "no"; };

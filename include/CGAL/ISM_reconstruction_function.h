@@ -135,8 +135,6 @@ private:
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
   std::vector<Xyz> m_given_points;  // the points before a point smoothing changed m_points
-  double m_extent_ratio = 1;  // the points' extent over that of their bulk (point_input.h)
-  int m_maximum_depth = 24;   // maximum_depth and the levels far outliers added
   // the k nearest points of m_points, from the noise measure to the end of the distance stage
   // (shared, as m_tr, so that the function stays copyable)
   std::shared_ptr<const ISM_reconstruction_3::internal::Point_neighbors> m_point_neighbors;
@@ -387,9 +385,8 @@ private:
     const I::Oriented_box box = I::bounding_parallelepiped(m_points, m_settings.box_margin);
     // a few far outliers widen the box: the levels they cost are given back, so that one
     // stray point 100 times farther than the object does not leave it 150 vertices
-    m_extent_ratio = I::extent_over_bulk_extent(m_points);
-    m_stats.added_levels = (std::min)(I::far_outlier_levels(m_extent_ratio), 48 - m_settings.maximum_depth);
-    m_maximum_depth = m_settings.maximum_depth + m_stats.added_levels;
+    m_stats.added_levels = (std::min)(I::far_outlier_levels(I::extent_over_bulk_extent(m_points)),
+                                      Settings::deepest_level - m_settings.maximum_depth);
     m_tr.reset(new Triangulation(Point(box.origin[0], box.origin[1], box.origin[2]),
                                  Vector(box.axis[0][0], box.axis[0][1], box.axis[0][2]),
                                  Vector(box.axis[1][0], box.axis[1][1], box.axis[1][2]),
@@ -576,10 +573,13 @@ private:
     m_fit[c] = parent >= 0 ? m_fit[parent] : ISM_reconstruction_3::internal::Plane_fit();
   }
 
+  // maximum_depth and the levels far outliers added (refine())
+  int maximum_depth() const { return m_settings.maximum_depth + m_stats.added_levels; }
+
   // the stop test: maximum level, minimum number of points, coplanarity error
   bool stop(Cell_index c) const
   {
-    return m_tr->level(c) >= m_maximum_depth || count(c) < std::size_t(m_settings.min_points_per_cell) ||
+    return m_tr->level(c) >= maximum_depth() || count(c) < std::size_t(m_settings.min_points_per_cell) ||
            m_fit[c].coplanarity_error < m_settings.coplanarity_threshold;
   }
 
@@ -725,7 +725,7 @@ private:
     namespace I = ISM_reconstruction_3::internal;
     const double radius = 0.75 * I::median_surface_leaf_size(leaves, m_vertex_xyz, m_sign);
     m_voting_radius = I::smallest_leaf_at_vertices(leaves, m_vertex_xyz);
-    for(float& r : m_voting_radius) r = float((std::max)(radius, 0.75 / 0.88 * r));
+    for(float& r : m_voting_radius) r = float((std::max)(radius, 0.75 / ISM_reconstruction_3::internal::smallest_over_median_leaf * r));
     return radius;
   }
 
@@ -937,7 +937,7 @@ private:
       const std::vector<Cell_index> misfit = I::misfit_leaves(
           tr, m_vertex_xyz, m_points, [&](std::uint32_t i) { return leaf_of_point(i); },
           [&](Cell_index c, const Xyz& x) { return interpolate(c, x); },
-          m_settings.surface_refinement_tolerance, 3., m_maximum_depth);
+          m_settings.surface_refinement_tolerance, 3., maximum_depth());
       CGAL_ISM_TIMER_MARK(step, "surface refinement: misfit leaves " + std::to_string(misfit.size()));
       if(misfit.empty()) break;
       m_stats.number_of_misfit_leaves += misfit.size();
@@ -990,7 +990,8 @@ private:
     if(m_value.empty() || m_value[best] >= 0)
       throw std::runtime_error("ISM reconstruction: no vertex was found inside the surface "
                                "(the points may not sample a closed surface densely enough)" +
-                               ISM_reconstruction_3::internal::far_outlier_hint(m_extent_ratio));
+                               ISM_reconstruction_3::internal::far_outlier_hint(
+                                   ISM_reconstruction_3::internal::extent_over_bulk_extent(m_points)));
     m_inner_point = m_tr->point(Vertex_index(best));
   }
 

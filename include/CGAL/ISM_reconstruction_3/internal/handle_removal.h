@@ -242,6 +242,7 @@ double median_surface_leaf_size(const Triangulation& tr, const std::vector<std::
 // that place. Where the sampling is uniform, at the vertices near the points it is the
 // median size of the leaves the surface crosses or one level below (0.88 of it, measured on
 // bunny00 at 36k points); where the points are sparser the leaves, and it, are larger.
+constexpr double smallest_over_median_leaf = 0.88;
 template <class Triangulation>
 std::vector<float> smallest_leaf_at_vertices(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz)
 {
@@ -285,7 +286,7 @@ std::size_t remove_thin_handles(const Triangulation& tr, const std::vector<std::
   std::vector<char> deep(n);
   for(std::size_t v = 0; v < n; ++v)
   {
-    const double size = local_size ? (std::max)(median, local[v] / 0.88) : median;
+    const double size = local_size ? (std::max)(median, local[v] / smallest_over_median_leaf) : median;
     deep[v] = boundary[v] || !(std::abs(values[v]) < relative_depth * size);
   }
   std::vector<std::uint32_t> offsets, leaves;  // only the shallow vertices are visited

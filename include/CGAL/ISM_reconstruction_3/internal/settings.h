@@ -31,6 +31,7 @@ namespace ISM_reconstruction_3 {
 */
 struct Settings
 {
+  static constexpr int deepest_level = 48;  ///< the largest `maximum_depth`, also with the levels far outliers add
   int maximum_depth = 24;                 ///< deepest level of a cell (the paper's maximum level)
   int min_points_per_cell = 6;            ///< fitting and subdivision need this many points (paper: 5 to 10)
   double coplanarity_threshold = 0.;      ///< a cell whose coplanarity error is below this is not subdivided
@@ -111,7 +112,8 @@ struct Settings
       throw std::invalid_argument("ISM reconstruction: parameter " + name + " = " + value + " is out of range " + range);
     };
     auto str = [](double v) { std::ostringstream os; os << v; return os.str(); };
-    if(maximum_depth < 1 || maximum_depth > 48) fail("maximum_depth", std::to_string(maximum_depth), "[1, 48]");
+    if(maximum_depth < 1 || maximum_depth > deepest_level)
+      fail("maximum_depth", std::to_string(maximum_depth), ("[1, " + std::to_string(deepest_level) + "]").c_str());
     if(min_points_per_cell < 3 || min_points_per_cell > 1000000)
       fail("min_points_per_cell", std::to_string(min_points_per_cell), "[3, 1000000]");
     if(!(coplanarity_threshold >= 0 && coplanarity_threshold < 1. / 3))
