@@ -322,9 +322,24 @@ Run run_alpha_wrap(const std::vector<Pwn>& input) {
   return run;
 }
 
+// The samples on one half of the surface (x above the samples' median) and every `keep_one_in`-th
+// of the others: one half `keep_one_in` times denser, as in the robustness test `nonuniform`.
+std::vector<Pwn> thin_one_half(const std::vector<Pwn>& samples, std::size_t keep_one_in) {
+  std::vector<double> xs;
+  for (const Pwn& s : samples) xs.push_back(s.first.x());
+  if (xs.empty()) return samples;
+  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
+  const double median = xs[xs.size() / 2];
+  std::vector<Pwn> kept;
+  std::size_t sparse_seen = 0;
+  for (const Pwn& s : samples)
+    if (s.first.x() > median || sparse_seen++ % keep_one_in == 0) kept.push_back(s);
+  return kept;
+}
+
 int usage() {
-  std::cerr << "usage: benchmark_reconstruction --method M --mesh truth.off --points N [--noise F] [--seed S]\n"
-               "         [--case NAME] [--samples K] [--queries Q] [--close-holes] [--output out.off]\n"
+  std::cerr << "usage: benchmark_reconstruction --method M --mesh truth.off --points N [--noise F] [--nonuniform R]\n"
+               "         [--seed S] [--case NAME] [--samples K] [--queries Q] [--close-holes] [--output out.off]\n"
                "  M: ism ism_paper poisson_jet_mst poisson_jet_ism poisson_oracle advancing_front scale_space\n"
                "     alpha_wrap\n";
   return 2;
@@ -337,6 +352,7 @@ int main(int argc, char** argv) {
   std::string method, mesh_file, case_name, output_file;
   std::size_t n_points = 0, samples = 100000, queries = 100000;
   double noise = 0;
+  std::size_t nonuniform = 1;
   unsigned seed = 1;
   bool close = false;
   for (int i = 1; i < argc; ++i) {
@@ -349,6 +365,7 @@ int main(int argc, char** argv) {
     else if (a == "--mesh") mesh_file = next();
     else if (a == "--points") n_points = std::stoul(next());
     else if (a == "--noise") noise = std::stod(next());
+    else if (a == "--nonuniform") nonuniform = std::stoul(next());
     else if (a == "--seed") seed = unsigned(std::stoul(next()));
     else if (a == "--case") case_name = next();
     else if (a == "--samples") samples = std::stoul(next());
@@ -357,7 +374,7 @@ int main(int argc, char** argv) {
     else if (a == "--output") output_file = next();
     else { std::cerr << "unknown argument " << a << "\n"; return usage(); }
   }
-  if (method.empty() || mesh_file.empty() || n_points == 0) return usage();
+  if (method.empty() || mesh_file.empty() || n_points == 0 || nonuniform == 0) return usage();
   if (case_name.empty()) case_name = mesh_file;
 
   Json out;
@@ -365,6 +382,7 @@ int main(int argc, char** argv) {
   out.str("case", case_name);
   out.integer("n_points", (long long)n_points);
   out.num("noise", noise);
+  out.integer("nonuniform", (long long)nonuniform);
   out.integer("seed", seed);
   try {
     Mesh truth;
@@ -374,7 +392,9 @@ int main(int argc, char** argv) {
     const ISM_eval::Topology tt = ISM_eval::topology(truth);
     const CGAL::Bbox_3 tb = ISM_eval::bbox(truth);
     const double diag = ISM_eval::diagonal(tb);
-    const std::vector<Pwn> input = ISM_eval::sample_points(truth, n_points, seed, noise * diag);
+    std::vector<Pwn> input = ISM_eval::sample_points(truth, n_points, seed, noise * diag);
+    if (nonuniform > 1) input = thin_one_half(input, nonuniform);
+    out.integer("n_input", (long long)input.size());
     out.integer("truth_components", (long long)tt.components);
     out.integer("truth_genus", tt.genus);
     out.boolean("truth_closed", tt.closed);

@@ -11,11 +11,13 @@ unoriented-input route in CGAL), scored by benchmark_reconstruction (one process
   /usr/bin/python3 run_density.py --build <cmake build dir> [--tarball data.tar.gz]
                                   [--out DIR] [--mesh bunny00] [--points 4000,8000,...]
                                   [--seeds 1,2,3] [--methods ism,poisson_jet_mst]
-                                  [--noise F] [--name density]
+                                  [--noise F] [--nonuniform R] [--name density]
 
 --noise adds gaussian noise of F times the diagonal to the samples: with one size and many
 seeds it measures how often a noise level gives the right surface (the robustness tests
-run one sampling per case).
+run one sampling per case). --nonuniform R keeps all samples on one half of the surface (x
+above the median) and every R-th on the other, as the robustness test `nonuniform` does
+(--points 65454 --nonuniform 10: its 36k points).
 
 Outputs in --out (default: the benchmark/ directory): NAME.md, NAME.jsonl.
 """
@@ -45,6 +47,8 @@ def parse_args():
     ap.add_argument("--methods", default="ism,poisson_jet_mst")
     ap.add_argument("--timeout", type=float, default=300)
     ap.add_argument("--noise", type=float, default=0.0, help="gaussian noise, as a fraction of the diagonal")
+    ap.add_argument("--nonuniform", type=int, default=1,
+                    help="keep every R-th sample on the half x < median: that half R times sparser (1: uniform)")
     ap.add_argument("--name", default="density", help="base name of the outputs")
     ap.add_argument("--replot", action="store_true", help="rewrite NAME.md from NAME.jsonl without running")
     args = ap.parse_args()
@@ -74,9 +78,9 @@ def main():
             for m in methods:
                 for s in seeds:
                     cmd = [exe, "--method", m, "--mesh", mesh, "--points", str(n), "--seed", str(s), "--case", args.mesh,
-                           "--noise", repr(args.noise)]
-                    r = run_case(cmd, args.timeout,
-                                 {"method": m, "case": args.mesh, "n_points": n, "seed": s, "noise": args.noise})
+                           "--noise", repr(args.noise), "--nonuniform", str(args.nonuniform)]
+                    r = run_case(cmd, args.timeout, {"method": m, "case": args.mesh, "n_points": n, "seed": s,
+                                                     "noise": args.noise, "nonuniform": args.nonuniform})
                     rows.append(r)
                     print("%-16s %6d seed %d %s" % (m, n, s, {k: r.get(k) for k in ("status", "genus", "inout_far")}),
                           flush=True)
@@ -94,9 +98,15 @@ def write_markdown(args, rows, started):
     seeds = sorted({r["seed"] for r in rows})
     level = args.noise or (rows[0].get("noise") or 0 if rows else 0)
     noise = (", gaussian noise of %g %% of the diagonal" % (100 * level)) if level > 0 else ""
+    thin = (rows[0].get("nonuniform") or 1) if rows else args.nonuniform
+    if thin > 1:
+        noise += (", then one half of them (x below the median) thinned to one sample in %d, the other half kept: "
+                  "N - N/2 + N/%d points in all" % (thin, 2 * thin))
     title = ("how often each method is right at %g %% noise" % (100 * level)) if level > 0 \
+        else ("how often each method is right on one half %d times sparser" % thin) if thin > 1 \
         else "how few points each method needs"
-    md = ["# ISM_reconstruction_3 %s sweep: %s" % ("noise" if level > 0 else "density", title), "",
+    kind = "noise" if level > 0 else "non-uniform" if thin > 1 else "density"
+    md = ["# ISM_reconstruction_3 %s sweep: %s" % (kind, title), "",
           "`%s.off` (libcgal-demo's data tarball) sampled by N area-weighted points without normals%s, seeds %s, "
           "reconstructed by each method and scored by `benchmark_reconstruction` "
           "(`benchmark/ISM_reconstruction_3/run_density.py`, %s). Poisson gets the normals CGAL users would give "
