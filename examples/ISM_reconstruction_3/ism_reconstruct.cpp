@@ -328,7 +328,8 @@ const std::vector<Option>& options()
     ISM_INTEGER_OPTION("--surface-refinement-passes", surface_refinement_passes,
                        "after the signs, bisect the leaves in which the function misses a point by more "
                        "than --surface-refinement-tolerance times their longest edge (and the noise), up "
-                       "to this many times; 0: none"),
+                       "to this many times, then as many times those larger than 1.5 times the median "
+                       "(sparser parts); 0: none"),
     ISM_REAL_OPTION("--surface-refinement-tolerance", surface_refinement_tolerance,
                     "miss of the function at a point, relative to its leaf's longest edge, above which "
                     "the leaf is bisected"),

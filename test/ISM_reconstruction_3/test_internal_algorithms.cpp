@@ -689,7 +689,8 @@ void tangent_plane_test()
 // The leaves in which F misses the points (surface_refinement.h): F linear (z - 0.5) on a
 // uniform Bisection_triangulation_3 of the unit cube. Points on its zero level miss nothing;
 // a point a quarter of its leaf above it is reported, alone; noise of the same amplitude on
-// every point hides it (3 times the median miss); a leaf at the maximum level is not reported.
+// every point hides it (3 times the median miss); a leaf at the maximum level, or not longer
+// than the minimum size, is not reported.
 void misfit_leaves_test()
 {
   typedef CGAL::Epick K;
@@ -719,6 +720,11 @@ void misfit_leaves_test()
   CHECK(misfit.size() == 1 && misfit[0] == holder, "misfit leaves: the leaf of the one point off the zero level, alone");
   CHECK(internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., tr.level(holder)).empty(),
         "misfit leaves: a leaf at the maximum level is not reported");
+  // the passes on the sparse parts' leaves (min_size): only leaves longer than it
+  CHECK(internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., 30, 0.25).empty(),
+        "misfit leaves: a leaf (0.22 long) not longer than min_size 0.25 is not reported");
+  CHECK(internal::misfit_leaves(tr, xyz, points, leaf_in(points), f, 0.05, 3., 30, 0.2) == misfit,
+        "misfit leaves: ... one longer than min_size 0.2 is");
   std::vector<Point> noisy(points);
   for(std::size_t i = 0; i + 1 < noisy.size(); ++i) noisy[i][2] += (i % 2 ? 1 : -1) * 0.03;
   CHECK(internal::misfit_leaves(tr, xyz, noisy, leaf_in(noisy), f, 0.05, 3., 30).empty(),
