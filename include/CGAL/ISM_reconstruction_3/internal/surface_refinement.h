@@ -28,18 +28,18 @@ namespace internal {
 // (measured on bunny00: every query farther than 1 % on the wrong side was such a leaf, its
 // four signs right). The points say where this happens: F should vanish on them.
 //
-// The leaves in which F misses a point `points[i]` by more than `tolerance` times the
-// leaf's longest edge and more than `noise_factor` times the median miss over all points
-// (noise makes every point miss by about its amplitude; a bend misses by more), sorted,
-// without the leaves at `max_level` and those whose longest edge is not above `min_size`.
-// `leaf_of(i)` is the leaf holding `points[i]` (-1: none), `value_in_leaf(c, x)` F at x in
-// leaf c.
 // Where the sampling is sparser than elsewhere the leaves the surface crosses stay larger
 // than the median one, and a chord there cuts deeper: a leaf this many times the median is
 // in such a part (a uniform sampling has none: bunny00 at 36k points and the 30 meshes of
 // the survey, none after the first passes), and gets passes of its own.
 constexpr double sparse_leaf_factor = 1.5;
 
+// The leaves in which F misses a point `points[i]` by more than `tolerance` times the
+// leaf's longest edge and more than `noise_factor` times the median miss over all points
+// (noise makes every point miss by about its amplitude; a bend misses by more), sorted,
+// without the leaves at `max_level` and those whose longest edge is not above `min_size`.
+// `leaf_of(i)` is the leaf holding `points[i]` (-1: none), `value_in_leaf(c, x)` F at x in
+// leaf c.
 template <class Triangulation, class LeafOf, class ValueInLeaf>
 std::vector<typename Triangulation::Cell_index>
 misfit_leaves(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
