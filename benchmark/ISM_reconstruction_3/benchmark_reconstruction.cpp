@@ -160,7 +160,7 @@ Run run_ism(const std::vector<Pwn>& input, bool paper) {
   const double t_input = t.time();
   f.compute_implicit_function_with_settings(s);
   const auto ex = CGAL::ISM_reconstruction_3::extract_surface(f, run.mesh, s.smoothing_iterations, s.smoothing_lambda,
-                                                               s.smoothing_mu);
+                                                               s.smoothing_mu, s.crossing_neighbors);
   const auto& st = f.statistics();
   run.stages = {{"input", t_input},
                 {"refinement", st.refinement_time},

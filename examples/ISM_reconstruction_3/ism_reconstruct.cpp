@@ -293,6 +293,9 @@ const std::vector<Option>& options()
                        "bisections between topology passes during refinement; 0: whenever the number "
                        "of leaves doubled; -1: none"),
     ISM_INTEGER_OPTION("--seed", random_seed, "random seed of the annealing (a run is deterministic)"),
+    ISM_INTEGER_OPTION("--crossing-neighbors", crossing_neighbors,
+                       "each surface vertex moves along its leaf edge onto the quadric fitted to this "
+                       "many nearest points (6-64); 0: the linear zero crossing of F"),
     ISM_INTEGER_OPTION("--smoothing-iterations", smoothing_iterations,
                        "Taubin lambda/mu iterations on the output surface (0: none)"),
     ISM_REAL_OPTION("--smoothing-lambda", smoothing_lambda, "Taubin smoothing factor lambda"),
@@ -887,7 +890,8 @@ int run(int argc, char** argv)
   progress.stage("extraction", 0.9);
   Mesh mesh;
   const CGAL::ISM_reconstruction_3::Extraction_statistics extraction = CGAL::ISM_reconstruction_3::extract_surface(
-      *function, mesh, settings.smoothing_iterations, settings.smoothing_lambda, settings.smoothing_mu);
+      *function, mesh, settings.smoothing_iterations, settings.smoothing_lambda, settings.smoothing_mu,
+      settings.crossing_neighbors);
 
   progress.stage("writing", 0.95);
   timer.reset();

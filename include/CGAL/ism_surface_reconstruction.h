@@ -9,6 +9,7 @@
 #define CGAL_ISM_SURFACE_RECONSTRUCTION_H
 
 #include <CGAL/ISM_reconstruction_function.h>
+#include <CGAL/ISM_reconstruction_3/internal/jet_crossing.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
 
@@ -48,11 +49,15 @@ struct Extraction_statistics
   \param smoothing_iterations the number of Taubin iterations, `0` for none
   \param lambda Taubin's lambda, the smoothing factor
   \param mu Taubin's mu, the inflating factor
+  \param crossing_neighbors each vertex moves along its edge onto the quadric fitted to this
+         many nearest input points (6 to 64); `0`: the linear zero crossing of the function
+         (the paper), see the named parameter `crossing_neighbors`
   \return the times of the marching tetrahedra and of the smoothing
 */
 template <class GeomTraits, class TriangleMesh>
 Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,
-                                      unsigned int smoothing_iterations, double lambda, double mu)
+                                      unsigned int smoothing_iterations, double lambda, double mu,
+                                      unsigned int crossing_neighbors = Settings().crossing_neighbors)
 {
   typedef typename boost::property_traits<
       typename boost::property_map<TriangleMesh, vertex_point_t>::type>::value_type Mesh_point;
@@ -84,7 +89,12 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
         if((values[v[1]] < 0) != inside || (values[v[2]] < 0) != inside || (values[v[3]] < 0) != inside)
           crossed.push_back(tr.positive_vertices(c));
       }
-    internal::marching_tetrahedra(vertices, crossed, values, points, triangles);
+    // the kd-tree of the function served its distances and was freed: a new one (5 ms at
+    // 36k points)
+    const std::vector<std::array<double, 3> >& input = function.input_points();
+    const internal::Point_neighbors neighbors(crossing_neighbors > 0 ? input : std::vector<std::array<double, 3> >());
+    internal::marching_tetrahedra(vertices, crossed, values, points, triangles,
+                                  internal::Jet_crossing(input, neighbors, crossing_neighbors));
   }
   stats.marching_time = timer.time();
   timer.reset();
@@ -243,6 +253,11 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamType{`double`, in (0, 10]}
       \cgalParamDefault{`0.1`}
     \cgalParamNEnd
+    \cgalParamNBegin{crossing_neighbors}
+      \cgalParamDescription{the vertex of the output on a crossed leaf edge moves along the edge onto the quadric fitted by least squares to this many nearest points (the fit of the jet smoothing, two linearised steps), unless the edge is within 6 degrees of tangent to the quadric, the move is longer than half the distance to the k-th nearest point, or it ends 1.5 times farther from the nearest point than it started; every vertex stays on its edge, so the triangles, the topology and the absence of self-intersections are those of the linear crossings; `0`: the linear zero crossing of F (the paper). Measured on the bunny at 36k points, 20 samplings each: mean distance to the truth 0.022 % of the diagonal instead of 0.037 % (clean), 0.021 % instead of 0.035 % (1 % outliers), 0.047 % instead of 0.074 % (one half ten times denser), the same with gaussian noise; the bar (genus 0, every query farther than 1 % of the diagonal right) met on 15 of 20 samplings instead of 13 with one half denser, 20 instead of 19 at 0.5 % noise; every far query right on 27 of the 30 meshes of the survey instead of 25. About 0.04 s at 36k points on 2 threads}
+      \cgalParamType{`unsigned int`, `0` or in [6, 64]}
+      \cgalParamDefault{`12`}
+    \cgalParamNEnd
     \cgalParamNBegin{smoothing_iterations}
       \cgalParamDescription{the number of Taubin lambda/mu iterations on the output mesh; `0`: no smoothing (the default: on the irregular triangles of marching tetrahedra, 3 iterations folded 851 edges of the bunny by more than 120 degrees, against 17 unsmoothed, without improving the distance to the truth)}
       \cgalParamType{`unsigned int`, in [0, 10000]}
@@ -264,7 +279,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
-      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `point_smoothing_iterations(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `point_smoothing_iterations(0)`, `crossing_neighbors(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
@@ -306,7 +321,7 @@ bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,
   if(!function.compute_implicit_function_with_settings(settings))
     return false;
   ISM_reconstruction_3::extract_surface(function, mesh, settings.smoothing_iterations, settings.smoothing_lambda,
-                                        settings.smoothing_mu);
+                                        settings.smoothing_mu, settings.crossing_neighbors);
   return true;
 }
 

@@ -2,6 +2,7 @@
 // tetrahedra, Taubin smoothing, removal of thin handles, escape rays, winding number.
 
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
+#include <CGAL/ISM_reconstruction_3/internal/jet_crossing.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
@@ -793,6 +794,61 @@ void add_sphere_points(std::vector<std::array<double, 3> >& points, int n, doubl
   }
 }
 
+// Jet crossings (jet_crossing.h): F's values are off by up to 80 % (as distance estimates
+// from points a leaf away are); the linear crossings inherit the error,
+// the crossings moved along their edges onto the quadric of the sphere's points must not.
+// The triangles stay those of the linear crossings, an edge almost tangent to the points
+// keeps its linear crossing, and k = 0 is the linear crossing.
+void jet_crossing_test(const Tet_mesh& m)
+{
+  std::vector<Point> points;
+  add_sphere_points(points, 20000, sphere_radius);
+  for(Point& p : points)
+    for(int d = 0; d < 3; ++d) p[d] += sphere_center[d];
+  const internal::Point_neighbors neighbors(points);
+  std::vector<double> values = sample(m, sphere_value);
+  // distances off by a factor 0.2 to 1.8: the signs, hence the crossed edges, stay right
+  for(std::size_t i = 0; i < values.size(); ++i)
+  {
+    const Point& p = m.points[i];
+    values[i] *= 1 + 0.8 * std::cos(7 * p[0] + 5 * p[1] - 3 * p[2]);
+  }
+  // the mean distance to the sphere, and the fraction of the crossings farther than h / 50
+  auto radial_error = [&](const std::vector<Point>& pts, double& far_fraction) {
+    double sum = 0;
+    std::size_t far = 0;
+    for(const Point& p : pts)
+    {
+      const double e = std::abs(sphere_value(p));
+      sum += e;
+      if(e > 0.02 * m.h) ++far;
+    }
+    far_fraction = double(far) / double(pts.size());
+    return sum / double(pts.size());
+  };
+  std::vector<Point> linear, jet, none;
+  std::vector<Triangle> linear_tris, jet_tris, none_tris;
+  internal::marching_tetrahedra(m.points, m.tets, values, linear, linear_tris);
+  internal::marching_tetrahedra(m.points, m.tets, values, jet, jet_tris, internal::Jet_crossing(points, neighbors, 12));
+  internal::marching_tetrahedra(m.points, m.tets, values, none, none_tris, internal::Jet_crossing(points, neighbors, 0));
+  double linear_far, jet_far;
+  const double linear_mean = radial_error(linear, linear_far), jet_mean = radial_error(jet, jet_far);
+  std::cout << "  distance to the sphere, mean " << linear_mean << " -> " << jet_mean << ", farther than h/50 "
+            << 100 * linear_far << " % -> " << 100 * jet_far << " %" << std::endl;
+  const Surface_check c = check_surface(jet, jet_tris);
+  // (the quadrilaterals may take the other diagonal)
+  CHECK(c.closed_manifold && c.euler == 2 && jet.size() == linear.size() && jet_tris.size() == linear_tris.size(),
+        "jet crossing: not the linear crossings' sphere: " << c.error);
+  CHECK(none == linear && none_tris == linear_tris, "jet crossing: k = 0 must be the linear crossing");
+  CHECK(linear_mean > 0.02 * m.h, "jet crossing: the perturbed F should miss the sphere, mean " << linear_mean);
+  CHECK(jet_mean < 0.1 * linear_mean && jet_far < 0.05, "jet crossing: the crossings did not move onto the sphere");
+  // an edge at 1.8 degrees to the sphere's tangent plane at its pole
+  const Point pole = {sphere_center[0], sphere_center[1], sphere_center[2] + sphere_radius};
+  const Point a = {pole[0] - 0.05, pole[1], pole[2] + 0.0016}, b = {pole[0] + 0.05, pole[1], pole[2] - 0.0016};
+  CHECK(internal::Jet_crossing(points, neighbors, 12)(a, b, 0.3) == 0.3,
+        "jet crossing: an edge almost tangent to the points must keep its crossing");
+}
+
 // Points on a sphere of radius 0.5 (the closed sampled solid) in the grid on [-1,1]^3; the
 // inside: the vertices in the ball, and a slab beside it (0.5 < x < 0.6, |y|, |z| < 0.2) such
 // as the Ising signs leave beside a thin part. The escape rays must remove the slab, keep
@@ -996,6 +1052,9 @@ int main()
 
   std::cout << "Point smoothing" << std::endl;
   point_smoothing_test();
+
+  std::cout << "Jet crossings" << std::endl;
+  jet_crossing_test(grid);
 
   std::cout << "Taubin smoothing" << std::endl;
   taubin_test(grid);

@@ -33,7 +33,7 @@ static void check_case(const std::string& name, const Mesh& truth, std::size_t n
   function.compute_implicit_function_with_settings(settings);
   Mesh out;
   CGAL::ISM_reconstruction_3::extract_surface(function, out, settings.smoothing_iterations, settings.smoothing_lambda,
-                                              settings.smoothing_mu);
+                                              settings.smoothing_mu, settings.crossing_neighbors);
   const Topology t = topology(truth), o = topology(out);
   const CGAL::Bbox_3 bb = bbox(truth);
   const double diag = diagonal(bb);

@@ -1050,6 +1050,11 @@ std::vector<Case> corpus_cases()
   ISM_PARAM_CASE("warm_start_interval_-1", ANY, params::warm_start_interval(-1L));
   ISM_SMALL_PARAM_CASE("warm_start_interval_1", ANY, params::warm_start_interval(1L));
   ISM_PARAM_CASE("warm_start_interval_LONG_MAX", ANY, params::warm_start_interval(LONG_MAX));
+  ISM_PARAM_CASE("crossing_neighbors_0", ANY, params::crossing_neighbors(0u));
+  ISM_PARAM_CASE("crossing_neighbors_5", ERROR, params::crossing_neighbors(5u));
+  ISM_PARAM_CASE("crossing_neighbors_64", ANY, params::crossing_neighbors(64u));
+  ISM_PARAM_CASE("crossing_neighbors_65", ERROR, params::crossing_neighbors(65u));
+  ISM_PARAM_CASE("crossing_neighbors_-1", ERROR, params::crossing_neighbors(-1));
   ISM_PARAM_CASE("smoothing_iterations_0", ANY, params::smoothing_iterations(0u));
   ISM_PARAM_CASE("smoothing_iterations_10000", ANY, params::smoothing_iterations(10000u));
   ISM_PARAM_CASE("smoothing_iterations_10001", ERROR, params::smoothing_iterations(10001u));

@@ -46,6 +46,7 @@ enum cooling_factor_t { cooling_factor };
 enum number_of_sweeps_t { number_of_sweeps };
 enum warm_start_interval_t { warm_start_interval };
 enum smoothing_iterations_t { smoothing_iterations };
+enum crossing_neighbors_t { crossing_neighbors };
 enum smoothing_lambda_t { smoothing_lambda };
 enum smoothing_mu_t { smoothing_mu };
 enum clamp_box_boundary_t { clamp_box_boundary };
@@ -94,6 +95,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(cooling_factor)
 CGAL_ISM_ADD_NAMED_PARAMETER(number_of_sweeps)
 CGAL_ISM_ADD_NAMED_PARAMETER(warm_start_interval)
 CGAL_ISM_ADD_NAMED_PARAMETER(smoothing_iterations)
+CGAL_ISM_ADD_NAMED_PARAMETER(crossing_neighbors)
 CGAL_ISM_ADD_NAMED_PARAMETER(smoothing_lambda)
 CGAL_ISM_ADD_NAMED_PARAMETER(smoothing_mu)
 CGAL_ISM_ADD_NAMED_PARAMETER(clamp_box_boundary)

@@ -15,6 +15,8 @@
 // around the edge, so on a conforming mesh with no zero value the output is a closed
 // 2-manifold as soon as no boundary tetrahedron has a sign change.
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
+
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -65,18 +67,27 @@ inline double squared_distance(const std::array<double, 3>& p, const std::array<
 
 } // namespace marching_tetrahedra_detail
 
+// Where a crossed edge [a, b] gives its point: the parameter in [0, 1] from F's linear zero
+// crossing t; this one keeps it (jet_crossing.h moves it onto the points' quadric).
+struct Linear_crossing
+{
+  double operator()(const std::array<double, 3>&, const std::array<double, 3>&, double t) const { return t; }
+};
+
 // `vertices`: one point per vertex; `tets`: positively oriented tetrahedra
 // (det[p1-p0, p2-p0, p3-p0] > 0); `values`: one per vertex, never 0, negative = inside.
-// Output: `out_points` holds one point per crossed edge (at the linear zero crossing),
+// Output: `out_points` holds one point per crossed edge (at `crossing`'s point),
 // in increasing order of the edge's sorted vertex pair; `out_triangles` the triangles,
 // tetrahedra in input order, oriented so that their normal points toward positive values.
 // A tetrahedron with one vertex of one sign gives one triangle; two and two give a
 // quadrilateral split along its shorter diagonal (the first one on a tie).
-inline void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
-                                const std::vector<std::array<int, 4> >& tets,
-                                const std::vector<double>& values,
-                                std::vector<std::array<double, 3> >& out_points,
-                                std::vector<std::array<std::size_t, 3> >& out_triangles)
+template <class Crossing = Linear_crossing>
+void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
+                         const std::vector<std::array<int, 4> >& tets,
+                         const std::vector<double>& values,
+                         std::vector<std::array<double, 3> >& out_points,
+                         std::vector<std::array<std::size_t, 3> >& out_triangles,
+                         const Crossing& crossing = Crossing())
 {
   using namespace marching_tetrahedra_detail;
   CGAL_precondition(values.size() == vertices.size());
@@ -114,16 +125,17 @@ inline void marching_tetrahedra(const std::vector<std::array<double, 3> >& verti
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
 
   out_points.resize(keys.size());
-  for(std::size_t i = 0; i < keys.size(); ++i)
-  {
+  // in parallel: a crossing may fit a quadric to the points near it (100 ms serial at 36k)
+  for_each_index(keys.size(), [&](std::size_t i) {
     const std::size_t a = static_cast<std::size_t>(keys[i] >> 32);
     const std::size_t b = static_cast<std::size_t>(keys[i] & 0xFFFFFFFFULL);
     const double fa = values[a], fb = values[b];
     double t = fa / (fa - fb);  // opposite signs: the denominator is not zero
     t = (std::min)((std::max)(t, 0.), 1.);
+    t = crossing(vertices[a], vertices[b], t);
     for(int k = 0; k < 3; ++k)
       out_points[i][k] = vertices[a][k] + t * (vertices[b][k] - vertices[a][k]);
-  }
+  });
 
   // 2. The triangles.
   // For a positively oriented tet, if (i, j, k, l) is an even permutation of (0, 1, 2, 3),

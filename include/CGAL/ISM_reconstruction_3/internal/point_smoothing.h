@@ -8,9 +8,9 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_SMOOTHING_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_SMOOTHING_H
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
-#include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 
 #include <Eigen/Dense>
 
@@ -53,67 +53,82 @@ inline double median_neighborhood_coplanarity(const std::vector<std::array<doubl
   return double(errors[n / 2]);
 }
 
-// One jet-smoothing step: each point moves along the normal of its neighbours' PCA plane
+// The jet projection of `p`: along the normal of the PCA plane of its k nearest points,
 // onto the quadric h(u, v) = a0 + a1 u + a2 v + a3 u^2 + a4 uv + a5 v^2 fitted by least
 // squares to its k nearest points (itself included) in that plane's frame. A quadric, not
 // the plane: projecting on the plane flattened the curved parts (clean bunny: mean distance
 // 0.039 -> 0.081 % of the diagonal; with the quadric 0.041 %). Where the quadric is not
 // determined (fewer than 6 points, all on a line), the point goes onto the plane.
+// `p` itself if the points do not fit a plane.
+// What the projection of a point saw, for a caller that judges the move: the PCA normal and
+// the distance to the farthest of the k points (the reach of the fit).
+struct Jet_frame
+{
+  std::array<double, 3> normal;
+  double radius;
+};
+
+inline std::array<double, 3> jet_projection(const std::array<double, 3>& p, const std::vector<std::array<double, 3> >& points,
+                                            const Point_neighbors& neighbors, unsigned int k,
+                                            Jet_frame* frame = nullptr)
+{
+  std::uint32_t near[64];
+  const unsigned int m = (std::min)(k, 64u);
+  unsigned int count = 0;
+  Moments moments(p);
+  neighbors.for_nearest(p, m, [&](std::uint32_t q, double) {
+    near[count++] = q;
+    moments.add(points[q]);
+  });
+  Plane_fit fit;
+  if(!moments.fit(fit)) return p;
+  const Eigen::Vector3d n(fit.normal[0], fit.normal[1], fit.normal[2]);
+  const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  // the frame is scaled by the neighbourhood's radius: the normal equations stay well
+  // conditioned whatever the units
+  double radius2 = 0;
+  for(unsigned int j = 0; j < count; ++j)
+  {
+    const std::array<double, 3>& q = points[near[j]];
+    radius2 = (std::max)(radius2, (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
+  }
+  if(!(radius2 > 0)) return p;
+  const double scale = 1. / std::sqrt(radius2);
+  if(frame) *frame = Jet_frame{{{ n[0], n[1], n[2] }}, std::sqrt(radius2)};
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  for(unsigned int j = 0; j < count; ++j)
+  {
+    const std::array<double, 3>& q = points[near[j]];
+    const Eigen::Vector3d d(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+    const double u = d.dot(t1) * scale, v = d.dot(t2) * scale, h = d.dot(n) * scale;
+    const Eigen::Matrix<double, 6, 1> row = (Eigen::Matrix<double, 6, 1>() << 1, u, v, u * u, u * v, v * v).finished();
+    normal_matrix.noalias() += row * row.transpose();
+    rhs += h * row;
+  }
+  double a0 = -fit.signed_distance(p) * scale;  // the plane, unless the quadric is determined
+  if(count >= 6)
+  {
+    const Eigen::LDLT<Eigen::Matrix<double, 6, 6> > ldlt(normal_matrix);
+    // the points do not pin a quadric down (all on a line or a conic of the plane) when a
+    // pivot vanishes; then, or for a jump beyond the neighbourhood, the plane
+    const Eigen::Matrix<double, 6, 1> pivots = ldlt.vectorD().cwiseAbs();
+    if(ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-10 * pivots.maxCoeff())
+    {
+      const Eigen::Matrix<double, 6, 1> a = ldlt.solve(rhs);
+      if(std::isfinite(a[0]) && std::abs(a[0]) <= 1.) a0 = a[0];
+    }
+  }
+  const double shift = a0 / scale;
+  return {{ p[0] + shift * n[0], p[1] + shift * n[1], p[2] + shift * n[2] }};
+}
+
+// One jet-smoothing step: every point moved by its jet projection.
 inline std::vector<std::array<double, 3> > jet_smoothed(const std::vector<std::array<double, 3> >& points,
                                                         const Point_neighbors& neighbors, unsigned int k)
 {
-  std::vector<std::array<double, 3> > smoothed(points);
-  for_each_index(points.size(), [&](std::size_t i) {
-    const std::array<double, 3>& p = points[i];
-    std::uint32_t near[64];
-    const unsigned int m = (std::min)(k, 64u);
-    unsigned int count = 0;
-    Moments moments(p);
-    neighbors.for_nearest(p, m, [&](std::uint32_t q, double) {
-      near[count++] = q;
-      moments.add(points[q]);
-    });
-    Plane_fit fit;
-    if(!moments.fit(fit)) return;
-    const Eigen::Vector3d n(fit.normal[0], fit.normal[1], fit.normal[2]);
-    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    // the frame is scaled by the neighbourhood's radius: the normal equations stay well
-    // conditioned whatever the units
-    double radius2 = 0;
-    for(unsigned int j = 0; j < count; ++j)
-    {
-      const std::array<double, 3>& q = points[near[j]];
-      radius2 = (std::max)(radius2, (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
-    }
-    if(!(radius2 > 0)) return;
-    const double scale = 1. / std::sqrt(radius2);
-    Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-    for(unsigned int j = 0; j < count; ++j)
-    {
-      const std::array<double, 3>& q = points[near[j]];
-      const Eigen::Vector3d d(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
-      const double u = d.dot(t1) * scale, v = d.dot(t2) * scale, h = d.dot(n) * scale;
-      const Eigen::Matrix<double, 6, 1> row = (Eigen::Matrix<double, 6, 1>() << 1, u, v, u * u, u * v, v * v).finished();
-      normal_matrix.noalias() += row * row.transpose();
-      rhs += h * row;
-    }
-    double a0 = -fit.signed_distance(p) * scale;  // the plane, unless the quadric is determined
-    if(count >= 6)
-    {
-      const Eigen::LDLT<Eigen::Matrix<double, 6, 6> > ldlt(normal_matrix);
-      // the points do not pin a quadric down (all on a line or a conic of the plane) when a
-      // pivot vanishes; then, or for a jump beyond the neighbourhood, the plane
-      const Eigen::Matrix<double, 6, 1> pivots = ldlt.vectorD().cwiseAbs();
-      if(ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-10 * pivots.maxCoeff())
-      {
-        const Eigen::Matrix<double, 6, 1> a = ldlt.solve(rhs);
-        if(std::isfinite(a[0]) && std::abs(a[0]) <= 1.) a0 = a[0];
-      }
-    }
-    const double shift = a0 / scale;
-    for(int d = 0; d < 3; ++d) smoothed[i][d] = p[d] + shift * n[d];
-  });
+  std::vector<std::array<double, 3> > smoothed(points.size());
+  for_each_index(points.size(), [&](std::size_t i) { smoothed[i] = jet_projection(points[i], points, neighbors, k); });
   return smoothed;
 }
 

@@ -44,6 +44,9 @@ struct Settings
   /*! seed of the annealing: the result depends only on the input and the seed */
   std::uint64_t random_seed = 1;
   unsigned int smoothing_iterations = 0;  ///< Taubin lambda/mu iterations on the output mesh (0: the marching-tetrahedra surface; Taubin on its irregular triangles folded 851 edges of the bunny against 17)
+  /*! the marching-tetrahedra vertex of a crossed edge moves along the edge onto the quadric fitted to this
+      many nearest points (jet_crossing.h); 0: F's linear zero crossing (the paper) */
+  unsigned int crossing_neighbors = 12;
   /*! Taubin's lambda, the smoothing factor (> 0) */
   double smoothing_lambda = 0.5;
   /*! Taubin's mu, the inflating factor (< -lambda) */
@@ -102,6 +105,7 @@ struct Settings
     s.winding_number_signs = false;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
+    s.crossing_neighbors = 0;
     return s;
   }
 
@@ -127,6 +131,8 @@ struct Settings
     if(number_of_sweeps < 1 || number_of_sweeps > 100000)
       fail("number_of_sweeps", std::to_string(number_of_sweeps), "[1, 100000]");
     if(warm_start_interval < -1) fail("warm_start_interval", std::to_string(warm_start_interval), "[-1, inf)");
+    if(crossing_neighbors != 0 && (crossing_neighbors < 6 || crossing_neighbors > 64))
+      fail("crossing_neighbors", std::to_string(crossing_neighbors), "0 or [6, 64]");
     if(smoothing_iterations > 10000) fail("smoothing_iterations", std::to_string(smoothing_iterations), "[0, 10000]");
     if(!(std::abs(smoothing_lambda) <= 1)) fail("smoothing_lambda", str(smoothing_lambda), "[-1, 1]");
     if(!(std::abs(smoothing_mu) <= 1)) fail("smoothing_mu", str(smoothing_mu), "[-1, 1]");
@@ -181,6 +187,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.warm_start_interval = choose_parameter(get_parameter(np, inp::warm_start_interval), d.warm_start_interval);
   s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), d.random_seed);
   s.smoothing_iterations = choose_parameter(get_parameter(np, inp::smoothing_iterations), d.smoothing_iterations);
+  s.crossing_neighbors = choose_parameter(get_parameter(np, inp::crossing_neighbors), d.crossing_neighbors);
   s.smoothing_lambda = choose_parameter(get_parameter(np, inp::smoothing_lambda), d.smoothing_lambda);
   s.smoothing_mu = choose_parameter(get_parameter(np, inp::smoothing_mu), d.smoothing_mu);
   s.clamp_box_boundary = choose_parameter(get_parameter(np, inp::clamp_box_boundary), d.clamp_box_boundary);

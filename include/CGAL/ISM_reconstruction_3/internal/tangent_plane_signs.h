@@ -8,13 +8,9 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_TANGENT_PLANE_SIGNS_H
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -32,19 +28,6 @@ namespace internal {
 // points know better there, once their normals are oriented: the sign of a vertex near the
 // points is the side of their tangent planes it lies on (the signed distance of Hoppe et
 // al., SIGGRAPH 1992), with normals oriented by the in/out function itself.
-//
-// Runs `body(i)` for i in [0, n), in parallel when TBB is there (each i writes its own slot).
-template <class Body>
-void for_each_index(std::size_t n, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512), [&](const tbb::blocked_range<std::size_t>& r) {
-    for(std::size_t i = r.begin(); i != r.end(); ++i) body(i);
-  });
-#else
-  for(std::size_t i = 0; i < n; ++i) body(i);
-#endif
-}
 
 // Unoriented normals by PCA of the k nearest points of each of `points[which[j]]`, with the
 // coplanarity error of the fit (large where the neighbourhood is not a piece of one sheet: a
