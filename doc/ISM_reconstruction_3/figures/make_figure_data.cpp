@@ -9,6 +9,8 @@
 //   levels_<d>.txt        slice of the leaves of the bunny's model for maximum_depth = d
 //   slice_points.txt      the bunny's input points near the slicing plane (2D)
 //   sign_slice.txt        slice of the default bunny model with F at every polygon corner
+//   truth_slice.txt, crossing_slice_<k>.txt  segments of bunny00.off and of the surface of
+//                         that model with crossing_neighbors k on the same plane
 //   <name>_points.xyz     the sampled input points (no normals)
 //   <name>_reconstruction.off  ism_surface_reconstruction() with the default parameters
 //   stats.txt             sizes, times and topology of every run (quoted in the manual)
@@ -108,6 +110,44 @@ std::size_t write_slice(const Tr& tr, const Slice_plane& pl, const std::vector<d
   return n;
 }
 
+// Writes the segments "x1 y1 x2 y2" (plane coordinates) where the triangles of `mesh` cross
+// the plane.
+template <class TriangleMesh>
+std::size_t write_mesh_slice(const TriangleMesh& mesh, const Slice_plane& pl, const std::string& file)
+{
+  std::ofstream out(file);
+  out << std::setprecision(9);
+  std::size_t n = 0;
+  for(auto f : faces(mesh))
+  {
+    Xyz x[3];
+    double s[3];
+    int i = 0;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+    {
+      const auto& p = get(CGAL::vertex_point, mesh, v);
+      x[i] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+      s[i] = dot(sub(x[i], pl.origin), pl.normal);
+      ++i;
+    }
+    std::vector<Xyz> ends;
+    for(int a = 0; a < 3; ++a)
+    {
+      const int b = (a + 1) % 3;
+      if((s[a] > 0) == (s[b] > 0)) continue;
+      const double t = s[a] / (s[a] - s[b]);
+      Xyz y;
+      for(int d = 0; d < 3; ++d) y[d] = x[a][d] + t * (x[b][d] - x[a][d]);
+      ends.push_back(sub(y, pl.origin));
+    }
+    if(ends.size() != 2) continue;
+    out << dot(ends[0], pl.u) << ' ' << dot(ends[0], pl.w) << ' ' << dot(ends[1], pl.u) << ' ' << dot(ends[1], pl.w)
+        << '\n';
+    ++n;
+  }
+  return n;
+}
+
 std::vector<Point_3> sample(const std::string& mesh_file, std::size_t n, unsigned seed)
 {
   ISM_eval::Mesh m;
@@ -187,11 +227,26 @@ int main(int argc, char** argv)
     t.start();
     CGAL::ISM_reconstruction_function<K> f(bunny);
     f.compute_implicit_function();
+    const double model_time = t.time();
     const auto& st = f.statistics();
     const std::size_t n = write_slice(f.triangulation(), pl, &f.values(), out + "sign_slice.txt");
+    // the surface through F's linear zero crossings (the paper) and on the points' quadric
+    ISM_eval::Mesh truth;
+    ISM_eval::read_mesh(meshes + "/bunny00.off", truth);
+    write_mesh_slice(truth, pl, out + "truth_slice.txt");
+    const double diag = ISM_eval::diagonal(ISM_eval::bbox(truth));
+    for(unsigned int k : {0u, 12u})
+    {
+      Mesh mesh;
+      CGAL::ISM_reconstruction_3::extract_surface(f, mesh, 0, 0.5, -0.53, k);
+      write_mesh_slice(mesh, pl, out + "crossing_slice_" + std::to_string(k) + ".txt");
+      const ISM_eval::Distance_score d = ISM_eval::symmetric_distance(truth, mesh, 100000, 7);
+      stats << "bunny crossing_neighbors " << k << ": mean distance " << 100 * d.mean / diag << " % of the diagonal, max "
+            << 100 * d.max / diag << " %\n";
+    }
     stats << "bunny default: points " << st.number_of_points << " leaves " << st.number_of_leaves << " vertices "
           << st.number_of_vertices << " deepest " << st.deepest_level << " inside " << st.number_of_inside_vertices
-          << " energy " << st.final_energy << " all-outside " << st.all_outside_energy << " time " << t.time()
+          << " energy " << st.final_energy << " all-outside " << st.all_outside_energy << " time " << model_time
           << " sliced " << n << '\n';
   }
 

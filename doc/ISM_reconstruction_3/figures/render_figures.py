@@ -243,6 +243,58 @@ def figure_signs(data, out):
     save(fig, os.path.join(out, "inout_slice.png"))
 
 
+def segment_distances(points, segments):
+    """Distance from each of `points` (n, 2) to the nearest of `segments` (m, 4: x1 y1 x2 y2)."""
+    a = segments[:, :2]
+    d = segments[:, 2:] - a
+    dd = (d * d).sum(1)
+    dd[dd == 0] = 1
+    out = np.empty(len(points))
+    for i in range(0, len(points), 256):
+        p = points[i:i + 256, None, :]
+        t = np.clip(((p - a) * d).sum(2) / dd, 0, 1)
+        out[i:i + 256] = np.sqrt(((p - (a + t[..., None] * d)) ** 2).sum(2)).min(1)
+    return out
+
+
+def figure_crossings(data, out):
+    """The slice of the surface through F's linear crossings and through the quadric crossings,
+    zoomed where the two differ most against the truth."""
+    truth = np.loadtxt(os.path.join(data, "truth_slice.txt"))
+    linear = np.loadtxt(os.path.join(data, "crossing_slice_0.txt"))
+    quadric = np.loadtxt(os.path.join(data, "crossing_slice_12.txt"))
+    _, polys, _ = read_slice(os.path.join(data, "sign_slice.txt"), with_values=True)
+    pts = np.loadtxt(os.path.join(data, "slice_points.txt"))
+    mid_l = (linear[:, :2] + linear[:, 2:]) / 2
+    mid_q = (quadric[:, :2] + quadric[:, 2:]) / 2
+    err_l, err_q = segment_distances(mid_l, truth), segment_distances(mid_q, truth)
+    # the window (half width w) where the linear crossings miss the truth most, on average,
+    # more than the quadric ones
+    w, best, centre = 0.025, -1.0, mid_l[0]
+    for c in mid_l[::3]:
+        il, iq = np.abs(mid_l - c).max(1) < w, np.abs(mid_q - c).max(1) < w
+        if il.sum() >= 5 and iq.sum() >= 5 and err_l[il].mean() - err_q[iq].mean() > best:
+            best, centre = err_l[il].mean() - err_q[iq].mean(), c
+    fig, axes = plt.subplots(1, 2, figsize=(10.0, 5.0))
+    for ax, segs, err, color, title in (
+            (axes[0], linear, err_l, "#1f5fbf", "(a) F's linear zero crossings (the paper)"),
+            (axes[1], quadric, err_q, "#c0392b", "(b) moved along their edges onto the points' quadric")):
+        ax.add_collection(PolyCollection(polys, facecolors="none", edgecolors="#b0b0b0", linewidths=0.4))
+        ax.add_collection(LineCollection(truth.reshape(-1, 2, 2), colors="#8a8a8a", linewidths=5.0, alpha=0.45))
+        ax.add_collection(LineCollection(segs.reshape(-1, 2, 2), colors=color, linewidths=1.8))
+        ax.scatter(pts[:, 0], pts[:, 1], s=9, c="k", linewidths=0, zorder=3)
+        ax.set_xlim(centre[0] - w, centre[0] + w)
+        ax.set_ylim(centre[1] - w, centre[1] + w)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        inside = np.abs(((segs[:, :2] + segs[:, 2:]) / 2) - centre).max(1) < w
+        ax.set_title("%s\nmean distance to the truth in the window: %.2g" % (title, err[inside].mean()), fontsize=10)
+    fig.suptitle("bunny slice: truth (grey band), leaves (grey lines), points near the slice (black)", fontsize=10)
+    fig.tight_layout()
+    save(fig, os.path.join(out, "crossings.png"))
+
+
 def figure_reconstruction(data, out, name, rot, title):
     pts = np.loadtxt(os.path.join(data, name + "_points.xyz"))
     v, f = read_off(os.path.join(data, name + "_reconstruction.off"))
@@ -291,6 +343,7 @@ def main():
     figure_kuhn(data, out)
     figure_levels(data, out)
     figure_signs(data, out)
+    figure_crossings(data, out)
     figure_reconstruction(data, out, "bunny", rotation(20, 10), "Stanford bunny (bunny00.off), default parameters")
     figure_reconstruction(data, out, "knot", rotation(0, -35), "Knot (knot1.off), default parameters")
     if TOO_LARGE:
