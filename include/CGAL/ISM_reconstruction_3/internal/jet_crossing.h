@@ -61,14 +61,14 @@ public:
     // not past an end of the edge: a triangle of zero area is all the move may make
     const double lo = (std::min)(t, 1e-3), hi = (std::max)(t, 1 - 1e-3);
     const double start = t;
-    double reach = 0;
+    Jet_frame at_start{{{ 0., 0., 0. }}, 0., 0.};  // reach 0: no move
     for(int step = 0; step < 2; ++step)
     {
       const Xyz x = at(a, e, t);
       Jet_frame frame;
       const Xyz y = jet_projection(x, m_points, m_neighbors, m_k, &frame);
       if(y == x) break;
-      if(step == 0) reach = frame.radius;
+      if(step == 0) at_start = frame;
       const Xyz& n = frame.normal;
       const double along = n[0] * e[0] + n[1] * e[1] + n[2] * e[2];
       if(!(std::abs(along) >= 0.1 * length)) break;
@@ -76,8 +76,8 @@ public:
       t = (std::min)((std::max)(s, lo), hi);
     }
     if(t == start) return t;
-    if(!(std::abs(t - start) * length <= 0.5 * reach)) return start;
-    if(!(nearest_squared_distance(at(a, e, t)) <= 2.25 * nearest_squared_distance(at(a, e, start)))) return start;
+    if(!(std::abs(t - start) * length <= 0.5 * at_start.radius)) return start;
+    if(!(nearest_squared_distance(at(a, e, t)) <= 2.25 * at_start.nearest_squared_distance)) return start;
     return t;
   }
 

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -60,12 +61,14 @@ inline double median_neighborhood_coplanarity(const std::vector<std::array<doubl
 // 0.039 -> 0.081 % of the diagonal; with the quadric 0.041 %). Where the quadric is not
 // determined (fewer than 6 points, all on a line), the point goes onto the plane.
 // `p` itself if the points do not fit a plane.
-// What the projection of a point saw, for a caller that judges the move: the PCA normal and
-// the distance to the farthest of the k points (the reach of the fit).
+// What the projection of a point saw, for a caller that judges the move: the PCA normal, the
+// distance to the farthest of the k points (the reach of the fit) and the squared distance
+// to the nearest.
 struct Jet_frame
 {
   std::array<double, 3> normal;
   double radius;
+  double nearest_squared_distance;
 };
 
 inline std::array<double, 3> jet_projection(const std::array<double, 3>& p, const std::vector<std::array<double, 3> >& points,
@@ -75,9 +78,11 @@ inline std::array<double, 3> jet_projection(const std::array<double, 3>& p, cons
   std::uint32_t near[64];
   const unsigned int m = (std::min)(k, 64u);
   unsigned int count = 0;
+  double nearest2 = std::numeric_limits<double>::infinity();
   Moments moments(p);
-  neighbors.for_nearest(p, m, [&](std::uint32_t q, double) {
+  neighbors.for_nearest(p, m, [&](std::uint32_t q, double d2) {
     near[count++] = q;
+    nearest2 = (std::min)(nearest2, d2);
     moments.add(points[q]);
   });
   Plane_fit fit;
@@ -94,7 +99,7 @@ inline std::array<double, 3> jet_projection(const std::array<double, 3>& p, cons
   }
   if(!(radius2 > 0)) return p;
   const double scale = 1. / std::sqrt(radius2);
-  if(frame) *frame = Jet_frame{{{ n[0], n[1], n[2] }}, std::sqrt(radius2)};
+  if(frame) *frame = Jet_frame{{{ n[0], n[1], n[2] }}, std::sqrt(radius2), nearest2};
   Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
   for(unsigned int j = 0; j < count; ++j)
