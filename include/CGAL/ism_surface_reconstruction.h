@@ -89,12 +89,17 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
         if((values[v[1]] < 0) != inside || (values[v[2]] < 0) != inside || (values[v[3]] < 0) != inside)
           crossed.push_back(tr.positive_vertices(c));
       }
-    // the kd-tree of the function served its distances and was freed: a new one (5 ms at
-    // 36k points)
-    const std::vector<std::array<double, 3> >& input = function.input_points();
-    const internal::Point_neighbors neighbors(crossing_neighbors > 0 ? input : std::vector<std::array<double, 3> >());
-    internal::marching_tetrahedra(vertices, crossed, values, points, triangles,
-                                  internal::Jet_crossing(input, neighbors, crossing_neighbors));
+    if(crossing_neighbors == 0)
+      internal::marching_tetrahedra(vertices, crossed, values, points, triangles);
+    else
+    {
+      // the kd-tree of the function served its distances and was freed: a new one (5 ms at
+      // 36k points)
+      const std::vector<std::array<double, 3> >& input = function.input_points();
+      const internal::Point_neighbors neighbors(input);
+      internal::marching_tetrahedra(vertices, crossed, values, points, triangles,
+                                    internal::Jet_crossing(input, neighbors, crossing_neighbors));
+    }
   }
   stats.marching_time = timer.time();
   timer.reset();

@@ -53,6 +53,16 @@ struct Slice_plane
 double dot(const Xyz& a, const Xyz& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Xyz sub(const Xyz& a, const Xyz& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
 
+// Where the plane cuts the segment [a, b], whose signed distances to it are sa and sb (of
+// opposite signs), relative to the plane's origin.
+Xyz plane_crossing(const Slice_plane& pl, const Xyz& a, const Xyz& b, double sa, double sb)
+{
+  const double t = sa / (sa - sb);
+  Xyz x;
+  for(int d = 0; d < 3; ++d) x[d] = a[d] + t * (b[d] - a[d]);
+  return sub(x, pl.origin);
+}
+
 // Writes, for every leaf the plane cuts, its level and the convex cut polygon; with
 // `values` (one per vertex), also the linearly interpolated value at every corner.
 template <class Tr>
@@ -85,9 +95,7 @@ std::size_t write_slice(const Tr& tr, const Slice_plane& pl, const std::vector<d
         if((s[i] > 0) != (s[j] > 0))
         {
           const double t = s[i] / (s[i] - s[j]);
-          Xyz x;
-          for(int d = 0; d < 3; ++d) x[d] = xyz[vs[i]][d] + t * (xyz[vs[j]][d] - xyz[vs[i]][d]);
-          const Xyz r = sub(x, pl.origin);
+          const Xyz r = plane_crossing(pl, xyz[vs[i]], xyz[vs[j]], s[i], s[j]);
           const double f = values ? (*values)[vs[i]] + t * ((*values)[vs[j]] - (*values)[vs[i]]) : 0.;
           poly.push_back({{dot(r, pl.u), dot(r, pl.w), f}});
         }
@@ -135,10 +143,7 @@ std::size_t write_mesh_slice(const TriangleMesh& mesh, const Slice_plane& pl, co
     {
       const int b = (a + 1) % 3;
       if((s[a] > 0) == (s[b] > 0)) continue;
-      const double t = s[a] / (s[a] - s[b]);
-      Xyz y;
-      for(int d = 0; d < 3; ++d) y[d] = x[a][d] + t * (x[b][d] - x[a][d]);
-      ends.push_back(sub(y, pl.origin));
+      ends.push_back(plane_crossing(pl, x[a], x[b], s[a], s[b]));
     }
     if(ends.size() != 2) continue;
     out << dot(ends[0], pl.u) << ' ' << dot(ends[0], pl.w) << ' ' << dot(ends[1], pl.u) << ' ' << dot(ends[1], pl.w)
@@ -235,10 +240,11 @@ int main(int argc, char** argv)
     ISM_eval::read_mesh(meshes + "/bunny00.off", truth);
     write_mesh_slice(truth, pl, out + "truth_slice.txt");
     const double diag = ISM_eval::diagonal(ISM_eval::bbox(truth));
+    const CGAL::ISM_reconstruction_3::Settings defaults;
     for(unsigned int k : {0u, 12u})
     {
       Mesh mesh;
-      CGAL::ISM_reconstruction_3::extract_surface(f, mesh, 0, 0.5, -0.53, k);
+      CGAL::ISM_reconstruction_3::extract_surface(f, mesh, 0, defaults.smoothing_lambda, defaults.smoothing_mu, k);
       write_mesh_slice(mesh, pl, out + "crossing_slice_" + std::to_string(k) + ".txt");
       const ISM_eval::Distance_score d = ISM_eval::symmetric_distance(truth, mesh, 100000, 7);
       stats << "bunny crossing_neighbors " << k << ": mean distance " << 100 * d.mean / diag << " % of the diagonal, max "
