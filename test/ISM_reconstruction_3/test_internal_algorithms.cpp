@@ -997,6 +997,51 @@ void winding_number_test(const Tet_mesh& grid)
   CHECK(wrong == 0, "winding number: " << wrong << " vertices outside the sphere turned inside");
   CHECK(changed > 0 && internal::twice_euler_characteristic(leaves, {}, every_edge, signs, edges) == euler,
         "winding number: " << changed << " vertices re-signed, the surface's Euler characteristic changed");
+
+  // A flat pocket: the vertices of the plane x = 0 with |y| <= 0.3 and z >= -0.2 are outside,
+  // a slit through the ball's top. The winding number says inside (0.9) in the slit's middle
+  // (|y| <= 0.1, -0.05 <= z <= 0.1), weakly inside (0.55) on the strip from there down to the
+  // slit's closed end, and outside on the rest. Filling the middle alone makes a pillar across
+  // the slit, a handle: refused. Grown by three rings of leaves through the strip, the fill
+  // reaches the slit's end, adds no handle, and is kept.
+  const auto in_slit = [](const Point& p) { return std::abs(p[0]) < 1e-9 && std::abs(p[1]) < 0.3 + 1e-9 && p[2] > -0.2 - 1e-9; };
+  const auto in_middle = [](const Point& p) { return std::abs(p[1]) < 0.1 + 1e-9 && p[2] > -0.05 - 1e-9 && p[2] < 0.1 + 1e-9; };
+  const auto in_strip = [&](const Point& p) { return std::abs(p[1]) < 0.1 + 1e-9 && p[2] < -0.05 - 1e-9; };
+  const auto slit_w = [&](const Point& p) { return in_slit(p) ? (in_middle(p) ? 0.9 : in_strip(p) ? 0.55 : 0.2) : radius(p) < 0.5 ? 1. : 0.; };
+  for(const int growth_steps : { 3, 2, 0 })
+  {
+    std::vector<signed char> slit_signs(nv, 1);
+    std::vector<double> slit_values(nv, 1.);
+    std::size_t middle = 0, strip = 0;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const Point& p = grid.points[v];
+      if(radius(p) < 0.5 && !in_slit(p)) { slit_signs[v] = -1; slit_values[v] = -1.; }
+      middle += in_slit(p) && in_middle(p);
+      strip += in_slit(p) && in_strip(p);
+    }
+    const long slit_euler = internal::twice_euler_characteristic(leaves, {}, every_edge, slit_signs, edges);
+    internal::Winding_number_rule rule;
+    rule.growth_steps = growth_steps;
+    internal::Winding_number_cache slit_cache(leaves, fixed);
+    internal::sign_by_winding_number(leaves, grid.points, neighbors, spacing, slit_w, fixed, rule, slit_cache,
+                                     slit_signs, slit_values);
+    std::size_t filled = 0, wrong_fill = 0;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      const Point& p = grid.points[v];
+      if(!in_slit(p)) continue;
+      const bool expected = in_middle(p) || in_strip(p);
+      if(slit_signs[v] < 0) (expected ? filled : wrong_fill) += 1;
+    }
+    const std::string name = "winding number, slit, " + std::to_string(growth_steps) + " growth steps: ";
+    CHECK(slit_euler == 4 && middle == 20 && strip == 15, name << "test set-up, 2 chi " << slit_euler << ", " << middle
+                                                                << " middle and " << strip << " strip vertices");
+    CHECK(wrong_fill == 0, name << wrong_fill << " slit vertices filled where the winding number says outside");
+    CHECK(filled == (growth_steps >= 3 ? middle + strip : 0), name << filled << " middle and strip vertices filled");
+    CHECK(internal::twice_euler_characteristic(leaves, {}, every_edge, slit_signs, edges) == slit_euler,
+          name << "the surface's Euler characteristic changed");
+  }
 }
 
 int main()
