@@ -308,23 +308,24 @@ std::size_t sign_by_winding_number(const Leaves& leaves, const std::vector<std::
   std::uint32_t stamp = 0;
   std::vector<std::uint64_t> edges;
   std::size_t changed = 0;
+  // per vertex, computed once (in the parallel loop below each candidate is one thread's)
+  const auto find_distance = [&](std::uint32_t v) {
+    if(std::isnan(cache.distance[v]))
+      neighbors.for_nearest(vertex_xyz[v], 1, [&](std::uint32_t i, double d2) {
+        cache.distance[v] = float(std::sqrt(d2));
+        cache.spacing[v] = spacing[i];
+      });
+    return double(cache.distance[v]);
+  };
+  const auto find_w = [&](std::uint32_t v) {
+    if(std::isnan(cache.w[v])) cache.w[v] = float(w(vertex_xyz[v]));
+    return double(cache.w[v]);
+  };
   for(int round = 0; round < 32; ++round)
   {
     const std::vector<std::uint32_t> candidates =
         untested_vertices_of_crossed_leaves(leaves, signs, tested, [&](std::uint32_t v) { return !fixed[v]; });
     std::vector<double> new_value(candidates.size(), 0.);  // 0: unchanged
-    const auto find_distance = [&](std::uint32_t v) {
-      if(std::isnan(cache.distance[v]))
-        neighbors.for_nearest(vertex_xyz[v], 1, [&](std::uint32_t i, double d2) {
-          cache.distance[v] = float(std::sqrt(d2));
-          cache.spacing[v] = spacing[i];
-        });
-      return double(cache.distance[v]);
-    };
-    const auto find_w = [&](std::uint32_t v) {
-      if(std::isnan(cache.w[v])) cache.w[v] = float(w(vertex_xyz[v]));
-      return double(cache.w[v]);
-    };
     for_each_index(candidates.size(), [&](std::size_t j) {
       const std::uint32_t v = candidates[j];
       const double distance = find_distance(v);
