@@ -322,21 +322,6 @@ Run run_alpha_wrap(const std::vector<Pwn>& input) {
   return run;
 }
 
-// The samples on one half of the surface (x above the samples' median) and every `keep_one_in`-th
-// of the others: one half `keep_one_in` times denser, as in the robustness test `nonuniform`.
-std::vector<Pwn> thin_one_half(const std::vector<Pwn>& samples, std::size_t keep_one_in) {
-  std::vector<double> xs;
-  for (const Pwn& s : samples) xs.push_back(s.first.x());
-  if (xs.empty()) return samples;
-  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
-  const double median = xs[xs.size() / 2];
-  std::vector<Pwn> kept;
-  std::size_t sparse_seen = 0;
-  for (const Pwn& s : samples)
-    if (s.first.x() > median || sparse_seen++ % keep_one_in == 0) kept.push_back(s);
-  return kept;
-}
-
 int usage() {
   std::cerr << "usage: benchmark_reconstruction --method M --mesh truth.off --points N [--noise F] [--nonuniform R]\n"
                "         [--seed S] [--case NAME] [--samples K] [--queries Q] [--close-holes] [--output out.off]\n"
@@ -393,7 +378,7 @@ int main(int argc, char** argv) {
     const CGAL::Bbox_3 tb = ISM_eval::bbox(truth);
     const double diag = ISM_eval::diagonal(tb);
     std::vector<Pwn> input = ISM_eval::sample_points(truth, n_points, seed, noise * diag);
-    if (nonuniform > 1) input = thin_one_half(input, nonuniform);
+    if (nonuniform > 1) input = ISM_eval::thin_one_half(input, nonuniform);
     out.integer("n_input", (long long)input.size());
     out.integer("truth_components", (long long)tt.components);
     out.integer("truth_genus", tt.genus);

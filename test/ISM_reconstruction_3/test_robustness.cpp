@@ -1162,17 +1162,9 @@ Result bunny_quality(const std::string& which)
     // nonuniform: 36000 points in all, 32727 on the dense half, 3273 on the other (5.5 times
     // sparser than the 36k bunny); nonuniform_dense: the 36k bunny's density on the sparse
     // half (18000 points), 10 times that on the other (180000)
-    const std::vector<Point_3> all = mesh_points(truth, which == "nonuniform" ? 65454 : 360000, seed);
-    std::vector<double> xs;
-    for(const Point_3& p : all) xs.push_back(p.x());
-    std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
-    const double median = xs[xs.size() / 2];
-    std::size_t sparse_seen = 0, dense = 0;
-    for(const Point_3& p : all)
-    {
-      if(p.x() > median) { pts.push_back(p); ++dense; }
-      else if(sparse_seen++ % 10 == 0) pts.push_back(p);
-    }
+    std::size_t dense = 0;
+    for(const auto& s : thin_one_half(sample_points(truth, which == "nonuniform" ? 65454 : 360000, seed), 10, &dense))
+      pts.push_back(s.first);
     in << dense << " points on x > median, " << pts.size() - dense << " on the other half; ";
   }
   else return Result{CHECK_FAILED, "unknown case " + which};

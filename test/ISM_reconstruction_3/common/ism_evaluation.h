@@ -313,6 +313,30 @@ inline std::vector<std::pair<Point_3, Vector_3>> sample_points(const Mesh& m, st
   return out;
 }
 
+/// Non-uniform sampling: the samples on one half of the surface (x above the samples' median)
+/// and every `keep_one_in`-th of the others, so that one half is `keep_one_in` times denser
+/// (the robustness test `nonuniform` and `benchmark_reconstruction --nonuniform`). `dense`, if
+/// given, receives how many were kept on the dense half.
+inline std::vector<std::pair<Point_3, Vector_3>> thin_one_half(const std::vector<std::pair<Point_3, Vector_3>>& samples,
+                                                               std::size_t keep_one_in, std::size_t* dense = nullptr) {
+  if (samples.empty() || keep_one_in == 0) return samples;
+  std::vector<double> xs;
+  for (const auto& s : samples) xs.push_back(s.first.x());
+  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
+  const double median = xs[xs.size() / 2];
+  std::vector<std::pair<Point_3, Vector_3>> kept;
+  std::size_t sparse_seen = 0, on_dense = 0;
+  for (const auto& s : samples) {
+    if (s.first.x() > median) {
+      kept.push_back(s);
+      ++on_dense;
+    } else if (sparse_seen++ % keep_one_in == 0)
+      kept.push_back(s);
+  }
+  if (dense) *dense = on_dense;
+  return kept;
+}
+
 // ---------------------------------------------------------------------------------------
 // 3. Analytic ground-truth meshes
 // ---------------------------------------------------------------------------------------
