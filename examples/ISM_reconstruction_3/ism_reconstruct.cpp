@@ -275,7 +275,8 @@ const std::vector<Option>& options()
   static const std::vector<Option> table = {
     ISM_INTEGER_OPTION("--maximum-depth", maximum_depth,
                        "deepest level of a cell of the triangulation (the paper's maximum level; "
-                       "far outliers add 3 levels per doubling of the points' extent, up to 48)"),
+                       "far outliers and parts far apart add 3 levels per doubling of the points' extent over "
+                       "that of their bulk, up to 48)"),
     ISM_INTEGER_OPTION("--min-points-per-cell", min_points_per_cell,
                        "a cell is fitted and subdivided only with at least this many points"),
     ISM_REAL_OPTION("--coplanarity-threshold", coplanarity_threshold,
@@ -930,10 +931,10 @@ int run(int argc, char** argv)
 
   const auto& stats = function->statistics();
   if(stats.added_levels > 0 && stats.deepest_level >= CGAL::ISM_reconstruction_3::Settings::deepest_level)
-    std::cerr << "ism_reconstruct: warning: far outliers make the points' extent so much larger than that of "
-                 "98 % of them that the leaves reached the deepest level allowed ("
+    std::cerr << "ism_reconstruct: warning: far outliers or parts far apart make the points' extent so much "
+                 "larger than that of their bulk that the leaves reached the deepest level allowed ("
               << CGAL::ISM_reconstruction_3::Settings::deepest_level
-              << "): the surface may be coarse; remove the far outliers first\n";
+              << "): the surface may be coarse; remove the far outliers, or reconstruct the parts one by one\n";
   if(cl.quiet) return SUCCESS;
   const Topology topo = topology(mesh);
   auto yes = [](bool b) { return b ? "yes" : "no"; };
@@ -942,7 +943,7 @@ int run(int argc, char** argv)
   os << "input:       " << cl.input << " (" << stats.number_of_points << " points)\n"
      << "leaves:      " << stats.number_of_leaves << " (" << stats.number_of_vertices << " vertices, "
      << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level
-     << (stats.added_levels > 0 ? " (" + std::to_string(stats.added_levels) + " levels added for far outliers)" : std::string())
+     << (stats.added_levels > 0 ? " (" + std::to_string(stats.added_levels) + " levels added for far outliers or parts far apart)" : std::string())
      << ", " << stats.number_of_topology_passes << " topology passes)\n"
      << "time (s):    reading     " << std::setw(8) << read_time << "\n"
      << "             refinement  " << std::setw(8) << stats.refinement_time << "\n"

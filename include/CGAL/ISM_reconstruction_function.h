@@ -122,8 +122,8 @@ public:
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
     int deepest_level = 0;
-    /// levels added to `maximum_depth` (up to 48) because far outliers make the points' extent
-    /// 2^(n/3) times that of 98 % of them
+    /// levels added to `maximum_depth` (up to 48) because far outliers or parts far apart make
+    /// the points' extent 2^(n/3) times that of their bulk (98 % of them, or their largest group)
     int added_levels = 0;
     double final_energy = 0, all_outside_energy = 0;  ///< Ising energies; all-outside lower means the model failed
   };

@@ -144,7 +144,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{maximum_depth}
-      \cgalParamDescription{the deepest level of a cell of the binary multitriangulation (the paper's maximum level). Edges halve every 3 levels: cells of level 24 are 2^8 = 256 times smaller than the box. When a few far outliers make the extent of all the points 2^k times that of 98 % of them (k >= 1), 3k levels are added, up to 48, so that one stray point does not coarsen the surface (the statistic `added_levels`).}
+      \cgalParamDescription{the deepest level of a cell of the binary multitriangulation (the paper's maximum level). Edges halve every 3 levels: cells of level 24 are 2^8 = 256 times smaller than the box. When a few far outliers, or parts far apart, make the extent of all the points 2^k times that of their bulk (k >= 1), 3k levels are added, up to 48, so that one stray point does not coarsen the surface, nor two objects far apart each other (the statistic `added_levels`). The bulk is 98 % of the points or, if smaller, the largest group of points that lie together (at least 1 % of them, no gap wider than 1/32 of the extent).}
       \cgalParamType{`int`, in [1, 48]}
       \cgalParamDefault{`24`}
     \cgalParamNEnd

@@ -680,6 +680,39 @@ Result sphere_with_far_outlier(double distance)
   return r;
 }
 
+// two spheres `distance` radii apart: the box is as large as with a far outlier, but half
+// the points are out there. Each sphere must come out as fine as alone (its 5000 points give
+// about 2,400 vertices; with the bulk counted as 98 % of the points, which span both
+// spheres, 500 at 100 radii and no mesh at all at 1000).
+Result two_spheres(double distance)
+{
+  std::vector<Point_3> v = sphere_points(5000, 23), far = sphere_points(5000, 24, 1., Point_3(distance, 0, 0));
+  v.insert(v.end(), far.begin(), far.end());
+  Mesh m;
+  Result r = reconstruct(v, params::default_values(), &m);
+  if(r.kind != MESH_OK) return r;
+  std::size_t count[2] = {0, 0};
+  double lo = Inf, hi = 0;
+  for(vertex_descriptor vd : vertices(m))
+  {
+    const Point_3& p = m.point(vd);
+    const int which = p.x() > 0.5 * distance;  // the sphere it must lie on
+    const double dx = p.x() - which * distance, d = std::sqrt(dx * dx + p.y() * p.y() + p.z() * p.z());
+    lo = (std::min)(lo, d);
+    hi = (std::max)(hi, d);
+    ++count[which];
+  }
+  std::ostringstream os;
+  os << r.detail << "; vertices " << count[0] << " + " << count[1] << ", |v - c| / r in [" << lo << ", " << hi << "]";
+  r.detail = os.str();
+  if(!(lo > 0.9 && hi < 1.1) || count[0] < 1000 || count[1] < 1000)
+  {
+    r.kind = MESH_INVALID;
+    r.detail += " NOT THE TWO SPHERES";
+  }
+  return r;
+}
+
 std::vector<Case> corpus_cases()
 {
   std::vector<Case> cases;
@@ -823,6 +856,9 @@ std::vector<Case> corpus_cases()
   for(double distance : {30., 100., 1000.})
     add("outliers", "sphere_one_point_at_" + std::to_string(int(distance)), MESH,
         [distance] { return sphere_with_far_outlier(distance); });
+  for(double distance : {100., 1000.})
+    add("outliers", "two_spheres_" + std::to_string(int(distance)) + "_apart", MESH,
+        [distance] { return two_spheres(distance); });
   add("nonfinite", "all_nan", ERROR, [] { return reconstruct(std::vector<Point_3>(100, Point_3(NaN, NaN, NaN))); });
   // so far that the sphere is a line to the principal axes: the error must name the cause
   add("nonfinite", "far_outlier_1e10", ERROR, [] {

@@ -8,11 +8,14 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_INPUT_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_POINT_INPUT_H
 
+#include <CGAL/ISM_reconstruction_3/internal/disjoint_sets.h>
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,25 +64,82 @@ inline Principal_axes principal_axes(const std::vector<Xyz>& points)
   return pa;
 }
 
-// How many times the points' extent exceeds that of their bulk, 98 % of them along each
-// axis (the longest of either): a few far outliers make the box that much larger, and the
-// leaves near the surface that much coarser at the same level.
+// The extent along each axis (the longest) of the largest group of points that lie together:
+// the occupied cells of a grid of 32^3 cells over the points' box, joined across faces,
+// edges and corners (a gap narrower than a cell is bridged), among the groups that hold at
+// least 1 % of the points. Two objects far apart are two groups, each as large as itself;
+// a stray point is a group too small to count. `all`: the points' extent.
+inline double largest_group_extent(const std::vector<Xyz>& points, const Xyz& lo, double all)
+{
+  constexpr int n = 32;
+  const auto cell_of = [&](const Xyz& p) {
+    int c = 0;
+    for(int d = 2; d >= 0; --d)
+      c = c * n + (std::min)(n - 1, (std::max)(0, int((p[d] - lo[d]) / all * n)));
+    return c;
+  };
+  std::vector<std::uint32_t> count(n * n * n, 0);
+  for(const Xyz& p : points) ++count[std::size_t(cell_of(p))];
+  Disjoint_sets groups(count.size());
+  for(int k = 0; k < n; ++k)
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        const int c = (k * n + j) * n + i;
+        if(count[std::size_t(c)] == 0) continue;
+        for(int dk = 0; dk <= 1; ++dk)  // each pair of touching cells once
+          for(int dj = -1; dj <= 1; ++dj)
+            for(int di = -1; di <= 1; ++di)
+            {
+              if(dk == 0 && (dj < 0 || (dj == 0 && di <= 0))) continue;
+              const int ii = i + di, jj = j + dj, kk = k + dk;
+              if(ii < 0 || jj < 0 || ii >= n || jj >= n || kk >= n) continue;
+              const int e = (kk * n + jj) * n + ii;
+              if(count[std::size_t(e)] > 0) groups.unite(std::uint32_t(c), std::uint32_t(e));
+            }
+      }
+  std::vector<std::size_t> size(count.size(), 0);
+  std::vector<Xyz> low(count.size(), {{ HUGE_VAL, HUGE_VAL, HUGE_VAL }}), high(count.size(), {{ -HUGE_VAL, -HUGE_VAL, -HUGE_VAL }});
+  for(const Xyz& p : points)
+  {
+    const std::uint32_t g = groups.find(std::uint32_t(cell_of(p)));
+    ++size[g];
+    for(int d = 0; d < 3; ++d)
+    {
+      low[g][d] = (std::min)(low[g][d], p[d]);
+      high[g][d] = (std::max)(high[g][d], p[d]);
+    }
+  }
+  double largest = 0;
+  for(std::size_t g = 0; g < size.size(); ++g)
+    if(size[g] > 0 && size[g] >= points.size() / 100)
+      for(int d = 0; d < 3; ++d) largest = (std::max)(largest, high[g][d] - low[g][d]);
+  return largest > 0 ? largest : all;
+}
+
+// How many times the points' extent exceeds that of their bulk along each axis (the longest
+// of either): a few far outliers, or a second object far away, make the box that much
+// larger, and the leaves near the surface that much coarser at the same level. The bulk is
+// the smaller of 98 % of the points and their largest group (largest_group_extent()).
 inline double extent_over_bulk_extent(const std::vector<Xyz>& points)
 {
   if(points.size() < 100) return 1;
   std::vector<double> t(points.size());
   double all = 0, bulk = 0;
+  Xyz lo;
   const std::size_t k = points.size() / 100;
   for(int d = 0; d < 3; ++d)
   {
     for(std::size_t i = 0; i < points.size(); ++i) t[i] = points[i][d];
-    const auto [lo, hi] = std::minmax_element(t.begin(), t.end());
-    all = (std::max)(all, *hi - *lo);
+    const auto [low, high] = std::minmax_element(t.begin(), t.end());
+    lo[d] = *low;
+    all = (std::max)(all, *high - *low);
     std::nth_element(t.begin(), t.begin() + k, t.end());
-    const double low = t[k];
+    const double low98 = t[k];
     std::nth_element(t.begin(), t.end() - 1 - k, t.end());
-    bulk = (std::max)(bulk, t[t.size() - 1 - k] - low);
+    bulk = (std::max)(bulk, t[t.size() - 1 - k] - low98);
   }
+  if(std::isfinite(all) && all > 0) bulk = (std::min)(bulk, largest_group_extent(points, lo, all));
   const double ratio = all / bulk;  // inf or NaN when DBL_MAX and -DBL_MAX overflow the extent
   return ratio > 1 ? (std::min)(ratio, 1e300) : 1;
 }
@@ -97,9 +157,10 @@ inline int far_outlier_levels(double extent_ratio)
 inline std::string far_outlier_hint(double extent_ratio)
 {
   if(extent_ratio < 1e3) return std::string();
-  return "; 98 % of the points span " + std::to_string(int(std::floor(std::log10(extent_ratio)))) +
+  return "; the bulk of the points (98 % of them, or their largest group) spans " +
+         std::to_string(int(std::floor(std::log10(extent_ratio)))) +
          " orders of magnitude less than all of them: remove the far outliers first "
-         "(e.g. CGAL::remove_outliers())";
+         "(e.g. CGAL::remove_outliers()), or reconstruct parts far apart one by one";
 }
 
 // Refuses, with a message, what cannot bound a volume: no points, non-finite
