@@ -60,6 +60,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -631,28 +632,43 @@ int run_cases(const std::string& title, const std::vector<Case>& cases, const st
 std::vector<Point_3> base_points() { return sphere_points(3000, 11); }
 std::vector<Point_3> small_points() { return sphere_points(500, 12); }
 
-// the mesh must be the sphere of centre c and radius s: every vertex within 10 % of s from
-// c, and (a coarse sphere is not the sphere) at least `minimum_vertices` vertices
-void check_sphere(const Mesh& m, double cx, double cy, double cz, double s, std::size_t minimum_vertices, Result& r)
+// the mesh must be the spheres of centres `centres` and radius s: every vertex within 10 % of
+// s from its nearest centre, and (a coarse sphere is not the sphere) at least
+// `minimum_vertices` vertices on each
+void check_spheres(const Mesh& m, const std::vector<std::array<double, 3> >& centres, double s,
+                   std::size_t minimum_vertices, Result& r)
 {
   if(r.kind != MESH_OK) return;
   double lo = Inf, hi = 0;
+  std::vector<std::size_t> count(centres.size(), 0);
   for(vertex_descriptor vd : vertices(m))
   {
     const Point_3& p = m.point(vd);
-    // divide first: at 1e-30 the squares would lose precision, at 1e200 they would overflow
-    const double dx = (p.x() - cx) / s, dy = (p.y() - cy) / s, dz = (p.z() - cz) / s;
-    const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+    double d = Inf;
+    std::size_t nearest = 0;
+    for(std::size_t i = 0; i < centres.size(); ++i)
+    {
+      // divide first: at 1e-30 the squares would lose precision, at 1e200 they would overflow
+      const double dx = (p.x() - centres[i][0]) / s, dy = (p.y() - centres[i][1]) / s, dz = (p.z() - centres[i][2]) / s;
+      const double di = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if(di < d) { d = di; nearest = i; }
+    }
     lo = (std::min)(lo, d);
     hi = (std::max)(hi, d);
+    ++count[nearest];
   }
   std::ostringstream os;
   os << r.detail << "; |v - c| / r in [" << lo << ", " << hi << "]";
+  if(centres.size() > 1)
+  {
+    os << ", vertices per sphere";
+    for(std::size_t c : count) os << " " << c;
+  }
   r.detail = os.str();
-  if(!(lo > 0.9 && hi < 1.1) || m.number_of_vertices() < minimum_vertices)
+  if(!(lo > 0.9 && hi < 1.1) || *std::min_element(count.begin(), count.end()) < minimum_vertices)
   {
     r.kind = MESH_INVALID;
-    r.detail += " NOT THE SPHERE";
+    r.detail += centres.size() > 1 ? " NOT THE SPHERES" : " NOT THE SPHERE";
   }
 }
 
@@ -663,7 +679,7 @@ Result scaled_sphere(double s, double offset, bool check_size)
   for(Point_3& p : v) p = Point_3(s * (p.x() + offset), s * (p.y() - 0.5 * offset), s * (p.z() + 0.25 * offset));
   Mesh m;
   Result r = reconstruct(v, params::default_values(), &m);
-  if(check_size) check_sphere(m, s * offset, -0.5 * s * offset, 0.25 * s * offset, s, 0, r);
+  if(check_size) check_spheres(m, {{{ s * offset, -0.5 * s * offset, 0.25 * s * offset }}}, s, 0, r);
   return r;
 }
 
@@ -676,7 +692,7 @@ Result sphere_with_far_outlier(double distance)
   v.emplace_back(distance, distance, distance);
   Mesh m;
   Result r = reconstruct(v, params::default_values(), &m);
-  check_sphere(m, 0, 0, 0, 1, 1000, r);
+  check_spheres(m, {{{ 0., 0., 0. }}}, 1, 1000, r);
   return r;
 }
 
@@ -690,26 +706,7 @@ Result two_spheres(double distance)
   v.insert(v.end(), far.begin(), far.end());
   Mesh m;
   Result r = reconstruct(v, params::default_values(), &m);
-  if(r.kind != MESH_OK) return r;
-  std::size_t count[2] = {0, 0};
-  double lo = Inf, hi = 0;
-  for(vertex_descriptor vd : vertices(m))
-  {
-    const Point_3& p = m.point(vd);
-    const int which = p.x() > 0.5 * distance;  // the sphere it must lie on
-    const double dx = p.x() - which * distance, d = std::sqrt(dx * dx + p.y() * p.y() + p.z() * p.z());
-    lo = (std::min)(lo, d);
-    hi = (std::max)(hi, d);
-    ++count[which];
-  }
-  std::ostringstream os;
-  os << r.detail << "; vertices " << count[0] << " + " << count[1] << ", |v - c| / r in [" << lo << ", " << hi << "]";
-  r.detail = os.str();
-  if(!(lo > 0.9 && hi < 1.1) || count[0] < 1000 || count[1] < 1000)
-  {
-    r.kind = MESH_INVALID;
-    r.detail += " NOT THE TWO SPHERES";
-  }
+  check_spheres(m, {{{ 0., 0., 0. }}, {{ distance, 0., 0. }}}, 1, 1000, r);
   return r;
 }
 
