@@ -4,7 +4,7 @@
 //   ism_reconstruct [options] INPUT OUTPUT
 //
 // INPUT: .xyz/.pwn, .ply, .off (a mesh file's vertices are the points), .las when CGAL is
-// linked with LASlib. OUTPUT: .off, .ply or .obj. `--tets FILE` also writes the leaves of
+// linked with LASlib. OUTPUT: .off, .ply, .obj or .stl. `--tets FILE` also writes the leaves of
 // the triangulation (.vtu or .mesh) with the per-vertex fields "sign" and "distance".
 // `--help` lists every parameter with its default.
 //
@@ -148,7 +148,7 @@ void create_temporary(const std::string& temporary, const std::string& final_nam
 // CGAL's OFF writer formats every coordinate through an ostream at precision 17: on the
 // dragon's 261k output vertices that took 1.1 s of a 10 s run. std::to_chars writes the
 // shortest decimal that reads back to the same double, so the file is as exact and written
-// in 0.13-0.19 s; .ply and .obj keep CGAL's writers.
+// in 0.13-0.19 s; .ply, .obj and .stl keep CGAL's writers.
 bool write_off(const std::string& file, const Mesh& mesh)
 {
   std::ofstream os(file, std::ios::binary);
@@ -382,7 +382,7 @@ void print_help(std::ostream& os)
 #ifdef CGAL_LINKED_WITH_LASLIB
   os << ", .las";
 #endif
-  os << "\n  OUTPUT  the surface: .off, .ply or .obj\n\n"
+  os << "\n  OUTPUT  the surface: .off, .ply, .obj or .stl (binary; for printing)\n\n"
         "Options (default value in brackets; 'paper:' when --paper changes it):\n";
   // "  --flag ARG   help text, wrapped at 100 columns under itself"
   auto line = [&os](const std::string& left, const std::string& help) {
@@ -499,8 +499,8 @@ Command_line parse_command_line(int argc, char** argv)
   cl.input = positional[0];
   cl.output = positional[1];
   const std::string out_ext = lowercase_extension(cl.output);
-  if(out_ext != "off" && out_ext != "ply" && out_ext != "obj")
-    usage_error("output '" + cl.output + "': the extension must be .off, .ply or .obj");
+  if(out_ext != "off" && out_ext != "ply" && out_ext != "obj" && out_ext != "stl")
+    usage_error("output '" + cl.output + "': the extension must be .off, .ply, .obj or .stl");
   if(!cl.tets.empty())
   {
     const std::string ext = lowercase_extension(cl.tets);

@@ -78,6 +78,15 @@ run obj 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.obj && {
   summary_has obj closed yes
   pass ".obj output, --flag=value"
 }
+# binary STL: an 80-byte header, the triangle count, 50 bytes per triangle; as many
+# triangles as the .off written above from the same points and flags
+run stl 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.stl && {
+  triangles=$(od -An -t u4 -j 80 -N 4 sphere.stl | tr -d ' ')
+  [ "$(stat -c %s sphere.stl)" = "$((84 + 50 * triangles))" ] || fail "stl: sphere.stl is not a binary STL of $triangles triangles"
+  [ "$triangles" = "$(grep -c '^f ' sphere.obj)" ] || fail "stl: $triangles triangles, the .obj has $(grep -c '^f ' sphere.obj)"
+  summary_has stl closed yes
+  pass ".stl output ($triangles triangles)"
+}
 # a mesh file's vertices are points: reconstruct from the .off written above
 run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
 run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
@@ -178,7 +187,7 @@ usage bad_distance --distance --distance far sphere.xyz usage.off
 usage switch_with_value --no-clamp --no-clamp=1 sphere.xyz usage.off
 usage switch_with_value_2 --no-tangent-planes --no-tangent-planes=0 sphere.xyz usage.off
 usage no_output OUTPUT sphere.xyz
-usage bad_output_extension usage.stl sphere.xyz usage.stl
+usage bad_output_extension usage.step sphere.xyz usage.step
 usage bad_tets_extension --tets sphere.xyz usage.off --tets usage.ele
 
 # ---------------------------------------------------------------------------------------
