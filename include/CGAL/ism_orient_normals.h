@@ -11,17 +11,13 @@
 #include <CGAL/ISM_reconstruction_function.h>
 #include <CGAL/ISM_reconstruction_3/parameters.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 #include <CGAL/property_map.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -188,14 +184,9 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
     if(std::isfinite(normals[i][0]) && std::isfinite(normals[i][1]) && std::isfinite(normals[i][2]))
       tests[i] = ISM_reconstruction_3::internal::ism_orientation_of(function, xyz[i], normals[i]);
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 256),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t i = r.begin(); i != r.end(); ++i) test(i);
-                    });
-#else
-  for(std::size_t i = 0; i < items.size(); ++i) test(i);
-#endif
+  ISM_reconstruction_3::internal::for_chunks(0, items.size(), 256, [&](std::size_t lo, std::size_t hi) {
+    for(std::size_t i = lo; i < hi; ++i) test(i);
+  });
   // where the function is not sure, the confident neighbours decide
   ISM_reconstruction_3::internal::propagate_orientations(xyz, normals, tests, 18, 0.5);
   std::vector<signed char> decision(items.size());

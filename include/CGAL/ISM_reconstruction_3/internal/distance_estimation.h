@@ -10,12 +10,8 @@
 
 #include <CGAL/ISM_reconstruction_3/parameters.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <array>
 #include <cmath>
@@ -67,14 +63,9 @@ inline std::vector<double> estimate_distances(const std::vector<std::array<doubl
       d = (std::min)(d, std::abs(plane.signed_distance(vertices[v])));
     values[v] = signs[v] * (std::max)(d, mode == NEAREST_POINT_SQUARED_DISTANCE ? tiny * tiny : tiny);
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>((std::min)(first, vertices.size()), vertices.size(), 1024),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t v = r.begin(); v != r.end(); ++v) one(v);
-                    });
-#else
-  for(std::size_t v = first; v < vertices.size(); ++v) one(v);
-#endif
+  for_chunks((std::min)(first, vertices.size()), vertices.size(), 1024, [&](std::size_t lo, std::size_t hi) {
+    for(std::size_t v = lo; v < hi; ++v) one(v);
+  });
   return values;
 }
 

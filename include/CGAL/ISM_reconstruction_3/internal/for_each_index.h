@@ -33,6 +33,27 @@ void for_each_index(std::size_t n, const Body& body)
 #endif
 }
 
+// Calls `f(lo, hi)` on disjoint subranges covering [b, e), of about `grain` indices each, in
+// parallel when TBB is there and the range holds more than two grains: for loops whose body
+// is a few operations, where a call per index would cost more than the work. The result
+// does not depend on the split when each index writes only its own slot.
+template <class F>
+void for_chunks(std::size_t b, std::size_t e, std::size_t grain, const F& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(e > b && e - b > 2 * grain)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(b, e, grain),
+                      [&f](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+    return;
+  }
+#else
+  (void)grain;
+#endif
+  if(b < e)
+    f(b, e);
+}
+
 } // namespace internal
 } // namespace ISM_reconstruction_3
 } // namespace CGAL

@@ -16,6 +16,7 @@
 // vertices of one class are independent and are updated in parallel), and the random
 // number used for (sweep, vertex) is a counter-based hash of (seed, sweep, vertex).
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -25,11 +26,6 @@
 #include <cstdint>
 #include <memory>
 #include <vector>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 namespace CGAL {
 namespace ISM_reconstruction_3 {
@@ -103,23 +99,8 @@ struct Packed_entry
   std::int32_t weight;  // H_e quantised, see `anneal()`
 };
 
-// Calls f(lo, hi) on subranges covering [b, e), in parallel when TBB is available.
-// The subranges are disjoint, so the result does not depend on how [b, e) is split.
-template <class F>
-void for_chunks(std::size_t b, std::size_t e, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  constexpr std::size_t grain = 2048;
-  if(e - b > 2 * grain)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(b, e, grain),
-                      [&f](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-    return;
-  }
-#endif
-  if(b < e)
-    f(b, e);
-}
+// the vertices of one colour class per parallel task: a flip test is a few operations
+constexpr std::size_t annealing_grain = 2048;
 
 } // namespace ising_detail
 
@@ -257,7 +238,7 @@ inline double anneal(const Coupling_graph& g, Coupling_graph* release,
   }
   // not value-initialised: filled (and first touched) in parallel below
   std::unique_ptr<Packed_entry[]> entries(new Packed_entry[offsets[number_of_free]]);
-  for_chunks(0, number_of_free, [&](std::size_t lo, std::size_t hi) {
+  for_chunks(0, number_of_free, annealing_grain, [&](std::size_t lo, std::size_t hi) {
     for(std::size_t i = lo; i < hi; ++i)
     {
       const std::size_t v = static_cast<std::size_t>(old_of_new[i]);
@@ -320,7 +301,7 @@ inline double anneal(const Coupling_graph& g, Coupling_graph* release,
       const std::uint64_t key = sweep_key(seed, static_cast<std::uint64_t>(sweep));
       for(std::size_t c = 0; c < number_of_colours; ++c)
       {
-        for_chunks(class_begin[c], class_begin[c + 1], [&](std::size_t lo, std::size_t hi) {
+        for_chunks(class_begin[c], class_begin[c + 1], annealing_grain, [&](std::size_t lo, std::size_t hi) {
           for(std::size_t i = lo; i < hi; ++i)
           {
             // dE = -2 S_i h; accept if dE <= 0 or u < exp(-dE/T).
@@ -346,7 +327,7 @@ inline double anneal(const Coupling_graph& g, Coupling_graph* release,
       std::atomic<bool> changed(false);
       for(std::size_t c = 0; c < number_of_colours; ++c)
       {
-        for_chunks(class_begin[c], class_begin[c + 1], [&](std::size_t lo, std::size_t hi) {
+        for_chunks(class_begin[c], class_begin[c + 1], annealing_grain, [&](std::size_t lo, std::size_t hi) {
           bool local_change = false;
           for(std::size_t i = lo; i < hi; ++i)
           {

@@ -8,12 +8,8 @@
 #ifndef CGAL_ISM_RECONSTRUCTION_3_INTERNAL_NORMAL_ORIENTATION_H
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_NORMAL_ORIENTATION_H
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <array>
 #include <cmath>
@@ -152,14 +148,9 @@ inline void propagate_orientations(const std::vector<std::array<double, 3> >& po
       if(i != uncertain[u]) knn[u].push_back(i);
     });
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, uncertain.size(), 64),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for(std::size_t u = r.begin(); u != r.end(); ++u) query(u);
-                    });
-#else
-  for(std::size_t u = 0; u < uncertain.size(); ++u) query(u);
-#endif
+  for_chunks(0, uncertain.size(), 64, [&](std::size_t lo, std::size_t hi) {
+    for(std::size_t u = lo; u < hi; ++u) query(u);
+  });
 
   // undirected adjacency (compressed rows) of the edges with at least one uncertain end
   std::vector<std::size_t> offset(size + 1, 0);

@@ -13,6 +13,7 @@
 // weights. Each step moves every vertex by factor * (mean of its neighbors - vertex),
 // all vertices at once (double-buffered), so the result does not depend on threads.
 
+#include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
 #include <CGAL/assertions.h>
 
 #include <algorithm>
@@ -20,36 +21,11 @@
 #include <cstddef>
 #include <vector>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
-
 namespace CGAL {
 namespace ISM_reconstruction_3 {
 namespace internal {
 
 /// \cond SKIP_IN_MANUAL
-
-namespace taubin_detail {
-
-template <class F>
-void for_chunks(std::size_t b, std::size_t e, const F& f)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  constexpr std::size_t grain = 4096;
-  if(e - b > 2 * grain)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(b, e, grain),
-                      [&f](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-    return;
-  }
-#endif
-  if(b < e)
-    f(b, e);
-}
-
-} // namespace taubin_detail
 
 // Smooths `points` in place: `iterations` times a lambda step then a mu step, the
 // umbrella operator using the unique neighbors of each vertex along the triangles' edges.
@@ -60,7 +36,7 @@ inline void taubin_smoothing(std::vector<std::array<double, 3> >& points,
                              double lambda = 0.5,
                              double mu = -0.53)
 {
-  using taubin_detail::for_chunks;
+  constexpr std::size_t grain = 4096;  // a vertex's step is a few additions
   const std::size_t n = points.size();
   if(n == 0 || triangles.empty() || iterations == 0)
     return;
@@ -87,7 +63,7 @@ inline void taubin_smoothing(std::vector<std::array<double, 3> >& points,
       }
   }
   std::vector<std::size_t> unique_size(n, 0);
-  for_chunks(0, n, [&](std::size_t lo, std::size_t hi) {
+  for_chunks(0, n, grain, [&](std::size_t lo, std::size_t hi) {
     for(std::size_t v = lo; v < hi; ++v)
     {
       const auto b = adjacency.begin() + static_cast<std::ptrdiff_t>(offsets[v]);
@@ -112,7 +88,7 @@ inline void taubin_smoothing(std::vector<std::array<double, 3> >& points,
   std::vector<std::array<double, 3> > buffer(points);
   auto step = [&](const std::vector<std::array<double, 3> >& in,
                   std::vector<std::array<double, 3> >& out, double factor) {
-    for_chunks(0, n, [&](std::size_t lo, std::size_t hi) {
+    for_chunks(0, n, grain, [&](std::size_t lo, std::size_t hi) {
       for(std::size_t v = lo; v < hi; ++v)
       {
         const std::size_t d = off[v + 1] - off[v];
