@@ -119,6 +119,7 @@ public:
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected because F missed their points (`surface_refinement_passes`)
     std::size_t number_of_winding_number_vertices = 0;  ///< vertices re-signed by the winding number of the points (`winding_number_signs`)
     std::size_t number_of_escaped_vertices = 0;  ///< inside vertices turned outside because rays from them leave the box (`escape_rays`)
+    std::size_t number_of_boundary_vertices_set_outside = 0;  ///< box boundary vertices left inside by the last annealing, set outside (only unclamped: `clamp_box_boundary(false)`)
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
     int deepest_level = 0;
@@ -629,6 +630,18 @@ private:
       if(boundary[v]) boundary_sum += m_sign[v];
     if(boundary_sum < 0)
       for(signed char& s : m_sign) s = static_cast<signed char>(-s);
+    // Unclamped (the paper), a box boundary vertex can stay inside after the flip, and the
+    // surface would open where the inside meets the box (a sparse open cylinder, or the
+    // bunny at 2,000 points with the paper's settings and eps_empty 1: closed no). The
+    // margin keeps the points off the box, so its boundary is outside: set so last, the
+    // result is closed whatever the annealing did.
+    if(last)
+      for(std::size_t v = 0; v < boundary.size(); ++v)
+        if(boundary[v] && m_sign[v] < 0)
+        {
+          m_sign[v] = 1;
+          ++m_stats.number_of_boundary_vertices_set_outside;
+        }
     m_stats.number_of_leaves = m_tr->number_of_leaves();
     m_stats.number_of_vertices = m_tr->number_of_vertices();
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
