@@ -467,7 +467,11 @@ Command_line parse_command_line(int argc, char** argv)
     if(arg == "-h" || arg == "--help") { no_value(); cl.help = true; }
     else if(arg == "--quiet") { no_value(); cl.quiet = true; }
     else if(arg == "--paper") { no_value(); paper = true; }
-    else if(arg == "--tets") cl.tets = take_value();
+    else if(arg == "--tets")
+    {
+      cl.tets = take_value();
+      if(cl.tets.empty()) usage_error("--tets needs a file name");
+    }
     else if(const Option* o = find_option(arg))
     {
       if(o->argument) assignments.emplace_back(o, take_value());
@@ -490,7 +494,10 @@ Command_line parse_command_line(int argc, char** argv)
     std::string message = e.what();
     for(const Option& o : options())
       if(message.find(std::string(" ") + o.field + " ") != std::string::npos)
+      {
         message = std::string(o.flag) + ": " + message;
+        break;
+      }
     usage_error(message);
   }
 
@@ -559,6 +566,10 @@ void scan_xyz(const std::string& file, std::istream& is, std::vector<Point>& out
   while(std::getline(is, line))
   {
     ++number;
+    const std::size_t cr = line.find('\r');
+    if(cr != std::string::npos && cr + 1 < line.size())
+      input_error(where(file, number) + ": a carriage return inside the line (old Mac line endings?); "
+                  "convert the file to '\\n' line endings");
     const std::size_t first = line.find_first_not_of(" \t\r");
     if(first == std::string::npos || line[first] == '#') continue;
     // the leading numbers of the line, up to the first token that is not one
@@ -593,6 +604,8 @@ void scan_xyz(const std::string& file, std::istream& is, std::vector<Point>& out
     }
     if(number == 1 && tokens == 1 && values.size() == 1 && values[0] >= 0 && values[0] == std::floor(values[0]))
     {
+      if(values[0] > 1e15)
+        input_error(where(file, number) + " announces " + printable(line, 30) + " points, more than any file holds");
       announced = (long long)values[0];
       announced_line = number;
       continue;
@@ -709,12 +722,201 @@ void scan_off(const std::string& file, std::istream& is)
   }
 }
 
+// PLY: the header, then every element's records, without keeping them. CGAL 5.5's reader
+// dereferences a null pointer on coordinates stored as integers or lists and on a property
+// before any element, silently drops a property of unknown type (misreading the rest), and
+// allocates whatever a list count says (a 117-byte file with a count of 4e9 took 3.9 GB
+// and 56 s before failing): each is refused here with its line.
+void scan_ply(const std::string& file, std::istream& is)
+{
+  struct Property
+  {
+    std::string name;
+    int size = 0;        // bytes of a scalar, or of a list's items
+    int count_size = 0;  // bytes of a list's count; 0 for a scalar
+    bool real = false;   // a scalar float or double
+  };
+  struct Element
+  {
+    std::string name;
+    unsigned long long count = 0;
+    std::vector<Property> properties;
+  };
+  auto type_size = [](const std::string& t) {
+    if(t == "char" || t == "int8" || t == "uchar" || t == "uint8") return 1;
+    if(t == "short" || t == "int16" || t == "ushort" || t == "uint16") return 2;
+    if(t == "int" || t == "int32" || t == "uint" || t == "uint32" || t == "float" || t == "float32") return 4;
+    if(t == "double" || t == "float64") return 8;
+    return 0;
+  };
+  auto is_real = [](const std::string& t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; };
+
+  std::string line;
+  std::size_t number = 0;
+  std::vector<Element> elements;
+  bool ascii = false, big_endian = false, ended = false;
+  while(!ended && std::getline(is, line))
+  {
+    ++number;
+    const std::vector<std::string> t = split(line);
+    if(number == 1)
+    {
+      if(t.size() != 1 || t[0] != "ply") input_error(where(file, number) + ": not a PLY file (it does not start with 'ply')");
+      continue;
+    }
+    if(t.empty()) input_error(where(file, number) + ": empty line in the PLY header");
+    if(number == 2)
+    {
+      if(t.size() != 3 || t[0] != "format" ||
+         (t[1] != "ascii" && t[1] != "binary_little_endian" && t[1] != "binary_big_endian"))
+        input_error(where(file, number) + ": expected 'format ascii|binary_little_endian|binary_big_endian 1.0', read '" +
+                    printable(line, 60) + "'");
+      ascii = t[1] == "ascii";
+      big_endian = t[1] == "binary_big_endian";
+    }
+    else if(t[0] == "comment" || t[0] == "obj_info") {}
+    else if(t[0] == "end_header") ended = true;
+    else if(t[0] == "element")
+    {
+      double count;
+      if(t.size() != 3 || !parse_token(t[2], count) || count < 0 || count != std::floor(count) || count > 1e15)
+        input_error(where(file, number) + ": expected 'element NAME COUNT', read '" + printable(line, 60) + "'");
+      elements.push_back(Element{t[1], (unsigned long long)count, {}});
+    }
+    else if(t[0] == "property")
+    {
+      if(elements.empty()) input_error(where(file, number) + ": a property before any element");
+      Property p;
+      const bool list = t.size() == 5 && t[1] == "list";
+      if(!list && t.size() != 3)
+        input_error(where(file, number) + ": expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME', read '" +
+                    printable(line, 60) + "'");
+      p.name = t.back();
+      p.size = type_size(t[list ? 3 : 1]);
+      if(p.size == 0) input_error(where(file, number) + ": unknown property type '" + printable(t[list ? 3 : 1], 20) + "'");
+      if(list)
+      {
+        p.count_size = type_size(t[2]);
+        if(p.count_size == 0 || is_real(t[2]))
+          input_error(where(file, number) + ": a list's count must have an integer type, not '" + printable(t[2], 20) + "'");
+      }
+      p.real = !list && is_real(t[1]);
+      elements.back().properties.push_back(p);
+    }
+    else
+      input_error(where(file, number) + ": unknown keyword '" + printable(t[0], 20) + "' in the PLY header");
+  }
+  if(!ended) input_error("'" + file + "': the PLY header has no 'end_header' line (truncated?)");
+
+  const Element* vertex = nullptr;
+  for(const Element& e : elements)
+    if(e.name == "vertex") vertex = &e;
+  if(vertex == nullptr || vertex->count == 0) input_error("'" + file + "' holds no point (no vertex element, or 0 vertices)");
+  for(const char* c : {"x", "y", "z"})
+  {
+    auto p = std::find_if(vertex->properties.begin(), vertex->properties.end(), [&](const Property& q) { return q.name == c; });
+    if(p == vertex->properties.end()) input_error("'" + file + "': the vertex element has no property '" + c + "'");
+    if(!p->real)
+      input_error("'" + file + "': the vertex property '" + c + "' is " + (p->count_size ? "a list" : "an integer") +
+                  "; CGAL's PLY reader takes coordinates as float or double");
+  }
+
+  // the records: a count beyond what is left of the file is refused before any reader trusts it
+  const std::string truncated = "'" + file + "': the file ends inside the PLY element '";
+  if(ascii)
+  {
+    std::vector<std::string> tokens;
+    std::size_t next = 0;
+    auto token = [&](std::string& out) {
+      while(next >= tokens.size())
+      {
+        if(!std::getline(is, line)) return false;
+        ++number;
+        tokens = split(line);
+        next = 0;
+      }
+      out = tokens[next++];
+      return true;
+    };
+    std::string t;
+    double v;
+    for(const Element& e : elements)
+      for(unsigned long long r = 0; r < e.count; ++r)
+        for(const Property& p : e.properties)
+        {
+          unsigned long long items = 1;
+          if(p.count_size)
+          {
+            if(!token(t)) input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + ")");
+            if(!parse_token(t, v) || v < 0 || v != std::floor(v))
+              input_error(where(file, number) + ": '" + printable(t, 40) + "' is not a list count");
+            items = (unsigned long long)v;
+          }
+          for(unsigned long long i = 0; i < items; ++i)
+          {
+            if(!token(t)) input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + ")");
+            if(!parse_token(t, v)) input_error(where(file, number) + ": '" + printable(t, 40) + "' is not a number");
+          }
+        }
+    return;
+  }
+  const std::streamoff data = is.tellg();
+  is.seekg(0, std::ios::end);
+  const std::streamoff end = is.tellg();
+  is.seekg(data);
+  unsigned long long left = (unsigned long long)(end - data);
+  for(const Element& e : elements)
+  {
+    unsigned long long record = 0;
+    bool lists = false;
+    for(const Property& p : e.properties)
+    {
+      record += unsigned(p.count_size ? p.count_size : p.size);
+      lists = lists || p.count_size;
+    }
+    if(!lists)
+    {
+      if(record != 0 && e.count > left / record) input_error(truncated + printable(e.name, 20) + "' (truncated?)");
+      left -= e.count * record;
+      is.seekg(std::streamoff(e.count * record), std::ios::cur);
+      continue;
+    }
+    for(unsigned long long r = 0; r < e.count; ++r)
+      for(const Property& p : e.properties)
+      {
+        if(left < unsigned(p.count_size ? p.count_size : p.size))
+          input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + ", truncated?)");
+        if(!p.count_size)
+        {
+          left -= unsigned(p.size);
+          is.seekg(p.size, std::ios::cur);
+          continue;
+        }
+        unsigned char b[4] = {0, 0, 0, 0};
+        is.read(reinterpret_cast<char*>(b), p.count_size);
+        left -= unsigned(p.count_size);
+        unsigned long long items = 0;
+        for(int k = 0; k < p.count_size; ++k)
+          items |= (unsigned long long)b[big_endian ? p.count_size - 1 - k : k] << (8 * k);
+        if(items > left / unsigned(p.size))
+          input_error(truncated + printable(e.name, 20) + "': record " + std::to_string(r) + " lists " +
+                      std::to_string(items) + " items (truncated or corrupt?)");
+        left -= items * unsigned(p.size);
+        is.seekg(std::streamoff(items * unsigned(p.size)), std::ios::cur);
+      }
+  }
+}
+
 std::vector<Point> read_input(const std::string& file)
 {
   struct stat st;
   if(::stat(file.c_str(), &st) != 0)
     input_error("cannot open '" + file + "': " + std::strerror(errno));
   if(S_ISDIR(st.st_mode)) input_error("cannot read '" + file + "': it is a directory");
+  // a pipe would block on open without a writer, and the scan below and CGAL's reader each
+  // open the file: a second open of a pipe waits for a writer that has gone
+  if(!S_ISREG(st.st_mode))
+    input_error("cannot read '" + file + "': not a regular file (a pipe or a device); write the points to a file first");
   std::ifstream probe(file, std::ios::binary);
   if(!probe) input_error("cannot open '" + file + "': " + std::strerror(errno));
   if(probe.peek() == std::ifstream::traits_type::eof()) input_error("'" + file + "' is empty");
@@ -727,7 +929,7 @@ std::vector<Point> read_input(const std::string& file)
     return points;
   }
   else if(ext == "off") scan_off(file, probe);
-  else if(ext == "ply") {}
+  else if(ext == "ply") scan_ply(file, probe);
 #ifdef CGAL_LINKED_WITH_LASLIB
   else if(ext == "las") {}
 #else
@@ -735,7 +937,8 @@ std::vector<Point> read_input(const std::string& file)
     input_error("cannot read '" + file + "': this build of CGAL is not linked with LASlib (no .las support)");
 #endif
   else
-    input_error("cannot read '" + file + "': unknown format '." + ext + "' (use .xyz, .pwn, .ply or .off)");
+    input_error("cannot read '" + file + "': " + (ext.empty() ? std::string("no extension to tell its format") : "unknown format '." + ext + "'") +
+                " (use .xyz, .pwn, .ply or .off)");
   probe.close();
 
   bool ok;

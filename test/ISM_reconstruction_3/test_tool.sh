@@ -90,6 +90,16 @@ run stl 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.stl && {
 # a mesh file's vertices are points: reconstruct from the .off written above
 run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
 run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
+# unclamped (the paper's way), a box boundary vertex could stay inside after the global
+# flip: 300 points on an open cylinder came out open with --no-clamp and with --paper
+awk 'BEGIN { for (i = 0; i < 20; ++i) for (j = 0; j < 15; ++j) { a = 6.283185307 * (i + 0.5 * (j % 2)) / 20
+             printf "%.9f %.9f %.9f\n", cos(a), sin(a), 2 * j / 14 - 1 } }' >cylinder.xyz
+for flag in --no-clamp --paper; do
+  run "unclamped$flag" 0 "$flag" cylinder.xyz "unclamped$flag.off" && {
+    summary_has "unclamped$flag" closed yes
+    pass "$flag on an open cylinder's points: a closed surface"
+  }
+done
 
 # ---------------------------------------------------------------------------------------
 # 2. bad input: exit 1, the file (and the line) named, no output left
@@ -145,6 +155,28 @@ if [ -s sphere.ply ]; then  # the binary PLY written above, cut in half
   bad_input truncated_ply truncated.ply
 else
   fail "truncated_ply: no sphere.ply to truncate"
+fi
+# PLY headers CGAL 5.5's reader crashes on (integer or list coordinates, a property before
+# any element) or trusts (a list count of 4e9 in a 100-byte file: 3.9 GB and a minute),
+# and a property of unknown type, which it drops and then misreads the rest
+says() {  # says NAME WORD: the message of the bad input NAME holds WORD
+  grep -qF -- "$2" "$1.err" || fail "$1: the message does not say '$2': $(cat "$1.err")"
+}
+ply_head='ply\nformat ascii 1.0\nelement vertex 3\n'
+printf "${ply_head}property int x\nproperty int y\nproperty int z\nend_header\n0 0 0\n1 0 0\n0 1 0\n" >int.ply
+bad_input ply_integer_coordinates int.ply && says ply_integer_coordinates "'x' is an integer"
+printf "${ply_head}property list uchar float x\nproperty float y\nproperty float z\nend_header\n1 0 0 0\n1 1 0 0\n1 0 1 0\n" >list.ply
+bad_input ply_list_coordinate list.ply && says ply_list_coordinate "'x' is a list"
+printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n' >property_first.ply
+bad_input ply_property_before_element property_first.ply 3 && says ply_property_before_element "before any element"
+printf "${ply_head}property float x\nproperty float y\nproperty int64 z\nend_header\n0 0 0\n1 0 0\n0 1 0\n" >int64.ply
+bad_input ply_unknown_type int64.ply 6 && says ply_unknown_type "'int64'"
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uint float w\nproperty float x\nproperty float y\nproperty float z\nend_header\n\x00\x28\x6b\xee\x00\x00\x00\x00' >list_count.ply
+bad_input ply_list_count_4e9 list_count.ply && says ply_list_count_4e9 "4000000000 items"
+# a named pipe: the scan and CGAL's reader each open the file, and a second open waits
+# for a writer that has gone (it hung)
+if mkfifo pipe.off 2>/dev/null; then
+  bad_input pipe_input pipe.off && says pipe_input "not a regular file"
 fi
 # points that cannot bound a volume, and an unknown format
 head -n 5 sphere.xyz >few.xyz

@@ -182,7 +182,8 @@ inline void check_point_set(const std::vector<Xyz>& points)
     if(std::find(distinct.begin(), distinct.end(), points[i]) == distinct.end()) distinct.push_back(points[i]);
   if(distinct.size() < minimum)
     throw std::invalid_argument("ISM reconstruction: " + std::to_string(distinct.size()) +
-                                " distinct points (of " + std::to_string(points.size()) +
+                                (distinct.size() == 1 ? " distinct point (of " : " distinct points (of ") +
+                                std::to_string(points.size()) +
                                 "); at least " + std::to_string(minimum) + " are needed to bound a volume");
   // duplicates weigh the variances but cannot make a zero one positive, or the reverse
   const Principal_axes pa = principal_axes(points);
