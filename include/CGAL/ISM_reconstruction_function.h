@@ -158,8 +158,10 @@ public:
   /*!
     Copies the points of `points` (through the `point_map` named parameter).
     \throws std::invalid_argument if the range is empty, holds a NaN or infinite
-    coordinate, has fewer distinct points than a cell needs, or all its points lie on a
-    plane or a line (no closed surface can be reconstructed from them).
+    coordinate, spans more than 1e32 or less than 1e-32 (the largest side of the points'
+    bounding box: some sizes are held in single precision; scale such points, and the result
+    back), has fewer distinct points than a cell needs, or all its points lie on a plane or a
+    line (no closed surface can be reconstructed from them).
     \throws std::length_error if the copy of the points would not fit in memory (see the named
     parameter `memory_limit`)
   */

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -174,6 +175,34 @@ inline void check_point_set(const std::vector<Xyz>& points)
       if(!std::isfinite(points[i][d]))
         throw std::invalid_argument("ISM reconstruction: point " + std::to_string(i) +
                                     " has a NaN or infinite coordinate");
+  // Sizes held in single precision (the kd-tree's boxes, voting radii and normals, the
+  // leaves' coplanarity errors) stop following the points beyond float's range: the bunny
+  // gives the same surface scaled from 1e-35 to 1e38, another at 1e40 and 1e-40, and a
+  // sphere scaled by 1e150 or 1e-150 found no inside; at 1e308 the box overflowed. Refused
+  // here, with the way out, rather than answered with a wrong mesh or a misleading error.
+  {
+    double span = 0;
+    for(int d = 0; d < 3; ++d)
+    {
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for(const Xyz& p : points)
+      {
+        lo = (std::min)(lo, p[d]);
+        hi = (std::max)(hi, p[d]);
+      }
+      span = (std::max)(span, hi - lo);
+    }
+    if(span > 0 && !(span >= 1e-32 && span <= 1e32))
+    {
+      std::ostringstream os;
+      os << "ISM reconstruction: the points span ";
+      if(std::isfinite(span)) os << span; else os << "more than a double holds";
+      os << " (the largest side of their bounding box), outside the supported 1e-32 to 1e32"
+            " (some sizes are held in single precision): scale the points, and the result back"
+         << far_outlier_hint(extent_over_bulk_extent(points));
+      throw std::invalid_argument(os.str());
+    }
+  }
   // only whether there are that many distinct points, so a scan that stops there, not a
   // sort of a copy (0.2 s on the dragon's 437k points)
   const std::size_t minimum = 10;
