@@ -1055,6 +1055,11 @@ int run(int argc, char** argv)
   timer.start();
   std::vector<Point> points = read_input(cl.input);
   const double read_time = timer.time();
+  // points far from unit size are reconstructed scaled by 2^e, exactly, and the outputs
+  // scaled back (normalization.h: some sizes are held in single precision)
+  const int e = CGAL::ISM_reconstruction_3::internal::normalizing_exponent(points, CGAL::Identity_property_map<Point>());
+  if(e != 0)
+    for(Point& p : points) p = Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
 
   Progress progress(!cl.quiet && ::isatty(STDERR_FILENO));
   Settings settings = cl.settings;
@@ -1093,9 +1098,10 @@ int run(int argc, char** argv)
 
   progress.stage("extraction", 0.9);
   Mesh mesh;
-  const CGAL::ISM_reconstruction_3::Extraction_statistics extraction = CGAL::ISM_reconstruction_3::extract_surface(
-      *function, mesh, settings.smoothing_iterations, settings.smoothing_lambda, settings.smoothing_mu,
-      settings.crossing_neighbors);
+  const CGAL::ISM_reconstruction_3::Extraction_statistics extraction =
+      CGAL::ISM_reconstruction_3::internal::extract_scaled_surface(*function, mesh, settings.smoothing_iterations,
+                                                                   settings.smoothing_lambda, settings.smoothing_mu,
+                                                                   settings.crossing_neighbors, -e);
 
   progress.stage("writing", 0.95);
   timer.reset();
@@ -1114,7 +1120,16 @@ int run(int argc, char** argv)
     fields[0].second.assign(function->signs().begin(), function->signs().end());
     fields[1].first = "distance";
     fields[1].second = function->values();
-    if(!CGAL::IO::write_tet_mesh(tets_tmp, tr.points(), tets, fields))
+    std::vector<Point> tet_points;
+    if(e != 0)
+    {
+      // a squared distance scales twice
+      const int value_exponent = settings.distance_estimate == CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? -2 * e : -e;
+      for(double& x : fields[1].second) x = std::ldexp(x, value_exponent);
+      tet_points.reserve(tr.points().size());
+      for(const Point& p : tr.points()) tet_points.push_back(Point(std::ldexp(p.x(), -e), std::ldexp(p.y(), -e), std::ldexp(p.z(), -e)));
+    }
+    if(!CGAL::IO::write_tet_mesh(tets_tmp, e == 0 ? tr.points() : tet_points, tets, fields))
       input_error("cannot write '" + cl.tets + "'");
   }
   // all written: move into place (the .sol of a .mesh first, the surface last)

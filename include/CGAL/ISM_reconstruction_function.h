@@ -303,7 +303,9 @@ public:
     {
       const Xyz c = {{ to_double(m_bounding_sphere.center().x()), to_double(m_bounding_sphere.center().y()),
                        to_double(m_bounding_sphere.center().z()) }};
-      return FT(std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) + (x[2] - c[2]) * (x[2] - c[2])) + 1e-9);
+      // the distance to the centre, positive: the small term relative, as the values inside
+      return FT(std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) + (x[2] - c[2]) * (x[2] - c[2])) +
+                1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
     }
     Cell_index c = r;
     while(!m_tr->is_leaf(c))

@@ -11,6 +11,7 @@
 #include <CGAL/ISM_reconstruction_function.h>
 #include <CGAL/ISM_reconstruction_3/internal/jet_crossing.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
+#include <CGAL/ISM_reconstruction_3/internal/normalization.h>
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -18,6 +19,8 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
+#include <cmath>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -57,7 +60,15 @@ struct Extraction_statistics
 template <class GeomTraits, class TriangleMesh>
 Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,
                                       unsigned int smoothing_iterations, double lambda, double mu,
-                                      unsigned int crossing_neighbors = Settings().crossing_neighbors)
+                                      unsigned int crossing_neighbors = Settings().crossing_neighbors);
+
+namespace internal {
+
+// extract_surface(), the mesh's points multiplied by 2^exponent (normalization.h)
+template <class GeomTraits, class TriangleMesh>
+Extraction_statistics extract_scaled_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,
+                                             unsigned int smoothing_iterations, double lambda, double mu,
+                                             unsigned int crossing_neighbors, int exponent)
 {
   typedef typename boost::property_traits<
       typename boost::property_map<TriangleMesh, vertex_point_t>::type>::value_type Mesh_point;
@@ -108,10 +119,23 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
   stats.smoothing_time = timer.time();
   std::vector<Mesh_point> mesh_points;
   mesh_points.reserve(points.size());
-  for(const auto& p : points) mesh_points.push_back(Mesh_point(p[0], p[1], p[2]));
+  for(const auto& p : points)
+    mesh_points.push_back(exponent == 0 ? Mesh_point(p[0], p[1], p[2])
+                                        : Mesh_point(std::ldexp(p[0], exponent), std::ldexp(p[1], exponent),
+                                                     std::ldexp(p[2], exponent)));
   std::vector<std::array<double, 3> >().swap(points);
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(mesh_points, triangles, mesh);
   return stats;
+}
+
+} // namespace internal
+
+template <class GeomTraits, class TriangleMesh>
+Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,
+                                      unsigned int smoothing_iterations, double lambda, double mu,
+                                      unsigned int crossing_neighbors)
+{
+  return internal::extract_scaled_surface(function, mesh, smoothing_iterations, lambda, mu, crossing_neighbors, 0);
 }
 
 } // namespace ISM_reconstruction_3
@@ -128,6 +152,9 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
   smoothing. It builds an `ISM_reconstruction_function` and meshes it with
   `ISM_reconstruction_3::extract_surface()`. The output is closed and 2-manifold by
   construction; it may have several components, and handles, as the sampled surface.
+  Points whose bounding box's largest side is outside [2^-32, 2^32) are reconstructed scaled
+  by a power of two that brings it into [1, 2), and the surface scaled back: exact, so any
+  extent a double holds gives the surface of the points at unit size, scaled.
 
   The package's own named parameters start the chain and \cgal's follow, as in
   `parameters::maximum_depth(20).random_seed(7).point_map(pm)`.
@@ -321,12 +348,33 @@ bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
-  ISM_reconstruction_function<Geom_traits> function(points, np);
   const ISM_reconstruction_3::Settings settings = ISM_reconstruction_3::settings_from_parameters(np);
-  if(!function.compute_implicit_function_with_settings(settings))
+  // points far from unit size are reconstructed scaled by 2^e, exactly (normalization.h)
+  const int e = ISM_reconstruction_3::internal::normalizing_exponent(points, NP_helper::get_const_point_map(points, np));
+  std::unique_ptr<ISM_reconstruction_function<Geom_traits> > function;
+  if(e == 0)
+    function.reset(new ISM_reconstruction_function<Geom_traits>(points, np));
+  else
+  {
+    typedef typename Geom_traits::Point_3 Point;
+    const auto point_map = NP_helper::get_const_point_map(points, np);
+    std::vector<Point> scaled;
+    scaled.reserve(points.size());
+    for(const auto& item : points)
+    {
+      const auto& p = get(point_map, item);
+      scaled.push_back(Point(std::ldexp(to_double(p.x()), e), std::ldexp(to_double(p.y()), e),
+                             std::ldexp(to_double(p.z()), e)));
+    }
+    function.reset(new ISM_reconstruction_function<Geom_traits>(
+        scaled, parameters::memory_limit(settings.memory_limit,
+                                         parameters::geom_traits(NP_helper::get_geom_traits(points, np)))));
+  }
+  if(!function->compute_implicit_function_with_settings(settings))
     return false;
-  ISM_reconstruction_3::extract_surface(function, mesh, settings.smoothing_iterations, settings.smoothing_lambda,
-                                        settings.smoothing_mu, settings.crossing_neighbors);
+  ISM_reconstruction_3::internal::extract_scaled_surface(*function, mesh, settings.smoothing_iterations,
+                                                         settings.smoothing_lambda, settings.smoothing_mu,
+                                                         settings.crossing_neighbors, -e);
   return true;
 }
 

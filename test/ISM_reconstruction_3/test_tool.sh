@@ -90,6 +90,18 @@ run stl 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.stl && {
 # a mesh file's vertices are points: reconstruct from the .off written above
 run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
 run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
+# far from unit size the points are reconstructed scaled by a power of two and the surface
+# scaled back (normalization.h): the same surface as at unit size (a sphere at 1e150 found no
+# inside, the bunny at 1e40 came out other)
+for scale in 1e200 1e-200; do
+  awk -v s=$scale '{ printf "%.17g %.17g %.17g\n", $1 * s, $2 * s, $3 * s }' sphere.xyz >scaled.xyz
+  run "scaled_$scale" 0 scaled.xyz "scaled_$scale.off" && {
+    summary_has "scaled_$scale" closed yes
+    want=$(grep '^output:' e2e.out | grep -o '([0-9]* vertices') got=$(grep '^output:' "scaled_$scale.out" | grep -o '([0-9]* vertices')
+    [ "$got" = "$want" ] || fail "scaled_$scale: $got, at unit size $want"
+    pass "points scaled by $scale: the surface of unit size $got"
+  }
+done
 # unclamped (the paper's way), a box boundary vertex could stay inside after the global
 # flip: 300 points on an open cylinder came out open with --no-clamp and with --paper
 awk 'BEGIN { for (i = 0; i < 20; ++i) for (j = 0; j < 15; ++j) { a = 6.283185307 * (i + 0.5 * (j % 2)) / 20
