@@ -1059,7 +1059,7 @@ int run(int argc, char** argv)
   // scaled back (normalization.h: some sizes are held in single precision)
   const int e = CGAL::ISM_reconstruction_3::internal::normalizing_exponent(points, CGAL::Identity_property_map<Point>());
   if(e != 0)
-    for(Point& p : points) p = Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
+    for(Point& p : points) p = CGAL::ISM_reconstruction_3::internal::scaled_point(p, e);
 
   Progress progress(!cl.quiet && ::isatty(STDERR_FILENO));
   Settings settings = cl.settings;
@@ -1127,7 +1127,7 @@ int run(int argc, char** argv)
       const int value_exponent = settings.distance_estimate == CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? -2 * e : -e;
       for(double& x : fields[1].second) x = std::ldexp(x, value_exponent);
       tet_points.reserve(tr.points().size());
-      for(const Point& p : tr.points()) tet_points.push_back(Point(std::ldexp(p.x(), -e), std::ldexp(p.y(), -e), std::ldexp(p.z(), -e)));
+      for(const Point& p : tr.points()) tet_points.push_back(CGAL::ISM_reconstruction_3::internal::scaled_point(p, -e));
     }
     if(!CGAL::IO::write_tet_mesh(tets_tmp, e == 0 ? tr.points() : tet_points, tets, fields))
       input_error("cannot write '" + cl.tets + "'");

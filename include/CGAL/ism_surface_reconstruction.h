@@ -361,11 +361,7 @@ bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,
     std::vector<Point> scaled;
     scaled.reserve(points.size());
     for(const auto& item : points)
-    {
-      const auto& p = get(point_map, item);
-      scaled.push_back(Point(std::ldexp(to_double(p.x()), e), std::ldexp(to_double(p.y()), e),
-                             std::ldexp(to_double(p.z()), e)));
-    }
+      scaled.push_back(ISM_reconstruction_3::internal::scaled_point(Point(get(point_map, item)), e));
     function.reset(new ISM_reconstruction_function<Geom_traits>(
         scaled, parameters::memory_limit(settings.memory_limit,
                                          parameters::geom_traits(NP_helper::get_geom_traits(points, np)))));

@@ -54,6 +54,13 @@ int normalizing_exponent(const PointRange& points, PointMap point_map)
   return -k;
 }
 
+// `p` times 2^e, exactly (the scaling above, and back with -e)
+template <class Point>
+Point scaled_point(const Point& p, int e)
+{
+  return Point(std::ldexp(to_double(p.x()), e), std::ldexp(to_double(p.y()), e), std::ldexp(to_double(p.z()), e));
+}
+
 } // namespace internal
 } // namespace ISM_reconstruction_3
 } // namespace CGAL
