@@ -90,6 +90,28 @@ run stl 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.stl && {
 # a mesh file's vertices are points: reconstruct from the .off written above
 run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
 run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
+# OFF variants CGAL 5.5's reader refuses ("malformed or truncated"): the tool reads their
+# points itself; exact coordinates give the .xyz run's surface, binary floats a closed one
+n=$(wc -l <sphere.xyz)
+{ echo COFF; echo "$n 0 0"; awk '{ print $0, 0.5, 0.25, 1, 1 }' sphere.xyz; } >colours.off
+{ echo 4OFF; echo "$n 0 0"; awk '{ printf "%.17g %.17g %.17g 2\n", 2 * $1, 2 * $2, 2 * $3 }' sphere.xyz; } >homogeneous.off
+{ echo "OFF $n 0 0"; cat sphere.xyz; } >header_counts.off
+{ echo "nOFF # dimension next"; echo 3; echo "$n 0 0"; cat sphere.xyz; } >dimension.off
+want=$(grep '^output:' e2e.out | grep -o '([0-9]* vertices')
+for variant in colours homogeneous header_counts dimension; do
+  run "off_$variant" 0 "$variant.off" "off_$variant.out.off" && {
+    got=$(grep '^output:' "off_$variant.out" | grep -o '([0-9]* vertices')
+    [ "$got" = "$want" ] || fail "off_$variant: $got, from the .xyz $want"
+    pass ".off input, $(head -c 8 "$variant.off" | head -1): the .xyz run's $got"
+  }
+done
+perl -ne 'BEGIN { @p = () } push @p, split; END { print "OFF BINARY\n", pack("N3", @p / 3, 0, 0), pack("f>*", @p) }' \
+  sphere.xyz >binary.off
+run off_binary 0 binary.off off_binary.out.off && {
+  summary_has off_binary closed yes
+  summary_has off_binary genus 0
+  pass "binary .off input"
+}
 # far from unit size the points are reconstructed scaled by a power of two and the surface
 # scaled back (normalization.h): the same surface as at unit size (a sphere at 1e150 found no
 # inside, the bunny at 1e40 came out other)
@@ -130,6 +152,10 @@ bad_input() {  # bad_input NAME FILE [LINE]: the tool must refuse FILE
   fi
 }
 
+says() {  # says NAME WORD: the message of the bad input NAME holds WORD
+  grep -qF -- "$2" "$1.err" || fail "$1: the message does not say '$2': $(cat "$1.err")"
+}
+
 bad_input missing does_not_exist.xyz
 : >empty.xyz
 bad_input empty_xyz empty.xyz
@@ -162,6 +188,14 @@ bad_input truncated_off_vertices truncated_vertices.off 100
 nv=$(sed -n 2p mesh.off | awk '{print $1}')
 head -n $((nv + 2 + 50)) mesh.off >truncated_faces.off
 bad_input truncated_off_faces truncated_faces.off $((nv + 52))
+printf 'nOFF\n2\n3 0 0\n0 0\n1 0\n0 1\n' >plane.off
+bad_input off_dimension_2 plane.off 2 && says off_dimension_2 "dimension 2"
+{ echo 4OFF; echo "$n 0 0"; awk 'NR == 7 { print $0, 0; next } { print $0, 1 }' sphere.xyz; } >infinity.off
+bad_input off_at_infinity infinity.off 9 && says off_at_infinity "at infinity"
+printf 'OFF\n1000000000 0 0\n0 0 0\n' >announces.off
+bad_input off_count_beyond_file announces.off 2 && says off_count_beyond_file "more than the file can hold"
+head -c 5000 binary.off >truncated_binary.off
+bad_input off_binary_truncated truncated_binary.off && says off_binary_truncated "truncated"
 if [ -s sphere.ply ]; then  # the binary PLY written above, cut in half
   head -c $(($(stat -c %s sphere.ply) / 2)) sphere.ply >truncated.ply
   bad_input truncated_ply truncated.ply
@@ -171,9 +205,6 @@ fi
 # PLY headers CGAL 5.5's reader crashes on (integer or list coordinates, a property before
 # any element) or trusts (a list count of 4e9 in a 100-byte file: 3.9 GB and a minute),
 # and a property of unknown type, which it drops and then misreads the rest
-says() {  # says NAME WORD: the message of the bad input NAME holds WORD
-  grep -qF -- "$2" "$1.err" || fail "$1: the message does not say '$2': $(cat "$1.err")"
-}
 ply_head='ply\nformat ascii 1.0\nelement vertex 3\n'
 printf "${ply_head}property int x\nproperty int y\nproperty int z\nend_header\n0 0 0\n1 0 0\n0 1 0\n" >int.ply
 bad_input ply_integer_coordinates int.ply && says ply_integer_coordinates "'x' is an integer"
