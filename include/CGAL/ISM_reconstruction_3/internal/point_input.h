@@ -217,13 +217,15 @@ inline void check_point_set(const std::vector<Xyz>& points)
   // duplicates weigh the variances but cannot make a zero one positive, or the reverse
   const Principal_axes pa = principal_axes(points);
   const double largest = pa.variance[2];
-  // a point 1e10 away from a unit sphere makes the sphere a line to these variances: say so
+  // A point 1e10 away from a unit sphere, or two spheres 1e6 apart, make a line to these
+  // variances: the message says how near (a millionth of the spread, not exactly), and the
+  // far-outlier hint why.
   if(pa.variance[1] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a line; they cannot bound a volume" +
-                                far_outlier_hint(extent_over_bulk_extent(points)));
+    throw std::invalid_argument("ISM reconstruction: all points lie on a line (to a millionth of their spread); "
+                                "they cannot bound a volume" + far_outlier_hint(extent_over_bulk_extent(points)));
   if(pa.variance[0] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a plane; they cannot bound a volume" +
-                                far_outlier_hint(extent_over_bulk_extent(points)));
+    throw std::invalid_argument("ISM reconstruction: all points lie on a plane (to a millionth of their spread); "
+                                "they cannot bound a volume" + far_outlier_hint(extent_over_bulk_extent(points)));
 }
 
 // The bounding cell (paper section 4): centred on the points, axes from PCA, scaled to
