@@ -257,7 +257,9 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
                   " vertices, more than the file can hold (truncated or corrupt?)");
   }
   if(vertices == 0) input_error(where(file, number) + ": the file has no vertex");
-  out.reserve(std::size_t(vertices));
+  // no more than 16M points ahead: the memory guard of the reconstruction, not the reader,
+  // is what refuses a point set too large for the machine
+  out.reserve(std::size_t((std::min)(vertices, 1ull << 24)));
 
   const std::size_t coordinates = homogeneous ? 4 : 3;
   double x[4];
