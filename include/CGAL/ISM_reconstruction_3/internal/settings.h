@@ -61,7 +61,7 @@ struct Settings
   double minimum_island_fraction = 0.01;  ///< inside (or enclosed outside) clusters of fewer vertices than this fraction of the largest inside cluster are flipped; 0: keep all
   /*! a handle of the surface that only vertices nearer to it than this many times the size of the leaves
       it crosses (the median, or the local one where larger) hold open is removed (a tunnel filled, else a bridge cut); 0: keep all handles */
-  double thin_handle_depth = 0.15;
+  double thin_handle_depth = 0.2;
   /*! near the points, a vertex takes the side of the tangent planes of its nearest points,
       whose normals (PCA) are oriented by the in/out function; false: the Ising sign (the paper) */
   bool tangent_plane_signs = true;
