@@ -83,7 +83,7 @@ struct Settings
   int point_smoothing_neighbors = 24;
   /*! the points are smoothed only if the median coplanarity error of their 12 nearest points exceeds this (clean
       scans: about 0.001, gaussian noise of 0.1 % of the diagonal: 0.02, 0.25 %: 0.08, 0.5 %: 0.13); 0: always */
-  double point_smoothing_noise = 0.1;
+  double point_smoothing_noise = 0.06;
   std::function<bool(double)> callback;   ///< progress in [0,1]; returning false cancels
 
   /// The settings of the paper (section 4): squared nearest-point distance, no clamping
