@@ -292,43 +292,44 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
           input_error(where(file, number) + ": vertex " + std::to_string(v) + ": '" + printable(record[d], 40) +
                       "' is not a number");
     }
-    const std::string at = binary ? "'" + file + "'" : where(file, number);
+    // the messages are built only on an error: a string per vertex cost more than the parse
+    auto at = [&]() { return binary ? "'" + file + "'" : where(file, number); };
     for(std::size_t d = 0; d < coordinates; ++d)
       if(!std::isfinite(x[d]))
-        input_error(at + ": vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
+        input_error(at() + ": vertex " + std::to_string(v) + " has a NaN or infinite coordinate");
     if(homogeneous)
     {
-      if(x[3] == 0) input_error(at + ": vertex " + std::to_string(v) + " is at infinity (its 4th coordinate is 0)");
+      if(x[3] == 0) input_error(at() + ": vertex " + std::to_string(v) + " is at infinity (its 4th coordinate is 0)");
       for(int d = 0; d < 3; ++d) x[d] /= x[3];
       if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-        input_error(at + ": vertex " + std::to_string(v) + " overflows when divided by its 4th coordinate");
+        input_error(at() + ": vertex " + std::to_string(v) + " overflows when divided by its 4th coordinate");
     }
     out.emplace_back(x[0], x[1], x[2]);
   }
 
   for(unsigned long long f = 0; f < faces; ++f)
   {
-    const std::string ends = "the file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces (truncated?)";
+    auto ends = [&]() { return "the file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces (truncated?)"; };
     if(binary)
     {
       // vertex count, indices, colour count, colour components
-      const std::string at = "'" + file + "': face " + std::to_string(f);
+      auto at = [&]() { return "'" + file + "': face " + std::to_string(f); };
       std::uint32_t k, id, colours;
-      if(!read_big_endian(is, k)) input_error("'" + file + "': " + ends);
-      if(k == 0 || k > vertices) input_error(at + " has " + std::to_string(k) + " vertices (corrupt?)");
+      if(!read_big_endian(is, k)) input_error("'" + file + "': " + ends());
+      if(k == 0 || k > vertices) input_error(at() + " has " + std::to_string(k) + " vertices (corrupt?)");
       for(std::uint32_t j = 0; j < k; ++j)
       {
-        if(!read_big_endian(is, id)) input_error("'" + file + "': " + ends);
-        if(id >= vertices) input_error(at + ": " + std::to_string(id) + " is not a vertex index");
+        if(!read_big_endian(is, id)) input_error("'" + file + "': " + ends());
+        if(id >= vertices) input_error(at() + ": " + std::to_string(id) + " is not a vertex index");
       }
-      if(!read_big_endian(is, colours)) input_error("'" + file + "': " + ends);
-      if(colours > 4) input_error(at + " has " + std::to_string(colours) + " colour components (corrupt?)");
+      if(!read_big_endian(is, colours)) input_error("'" + file + "': " + ends());
+      if(colours > 4) input_error(at() + " has " + std::to_string(colours) + " colour components (corrupt?)");
       for(std::uint32_t j = 0; j < colours; ++j)
-        if(!read_big_endian(is, id)) input_error("'" + file + "': " + ends);
+        if(!read_big_endian(is, id)) input_error("'" + file + "': " + ends());
       continue;
     }
     t = token();
-    if(t.empty()) input_error(where(file, number) + ": " + ends);
+    if(t.empty()) input_error(where(file, number) + ": " + ends());
     double k;
     if(!parse_token(t, k) || k < 1 || k != std::floor(k))
       input_error(where(file, number) + ": face " + std::to_string(f) + ": expected a vertex count, read '" +
