@@ -120,9 +120,7 @@ Extraction_statistics extract_scaled_surface(const ISM_reconstruction_function<G
   std::vector<Mesh_point> mesh_points;
   mesh_points.reserve(points.size());
   for(const auto& p : points)
-    mesh_points.push_back(exponent == 0 ? Mesh_point(p[0], p[1], p[2])
-                                        : Mesh_point(std::ldexp(p[0], exponent), std::ldexp(p[1], exponent),
-                                                     std::ldexp(p[2], exponent)));
+    mesh_points.push_back(Mesh_point(std::ldexp(p[0], exponent), std::ldexp(p[1], exponent), std::ldexp(p[2], exponent)));  // 2^0: exact
   std::vector<std::array<double, 3> >().swap(points);
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(mesh_points, triangles, mesh);
   return stats;
