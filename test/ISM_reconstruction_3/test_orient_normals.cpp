@@ -96,8 +96,7 @@ std::vector<Point_3> uniform_outliers(const Mesh& m, std::size_t n, unsigned see
   Rng rng(seed);
   std::vector<Point_3> out;
   for(std::size_t i = 0; i < n; ++i)
-    out.push_back(Point_3(rng.uniform(b.xmin(), b.xmax()), rng.uniform(b.ymin(), b.ymax()),
-                          rng.uniform(b.zmin(), b.zmax())));
+    out.push_back(rng.uniform_point(b));
   return out;
 }
 

@@ -303,7 +303,7 @@ std::vector<Point_3> random_cube(std::size_t n, std::uint64_t seed, double half 
   Rng rng(seed);
   std::vector<Point_3> v;
   v.reserve(n);
-  for(std::size_t i = 0; i < n; ++i) v.emplace_back(rng.uniform(-half, half), rng.uniform(-half, half), rng.uniform(-half, half));
+  for(std::size_t i = 0; i < n; ++i) v.push_back(rng.uniform_point(CGAL::Bbox_3(-half, -half, -half, half, half, half)));
   return v;
 }
 
@@ -793,7 +793,11 @@ std::vector<Case> corpus_cases()
     add("coplanar", "z0_" + std::to_string(n), ERROR, [n] {
       Rng rng(n + 2);
       std::vector<Point_3> v;
-      for(std::size_t i = 0; i < n; ++i) v.emplace_back(rng.uniform(-1, 1), rng.uniform(-1, 1), 0);
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const double y = rng.uniform(-1, 1);  // drawn first, as in Rng::uniform_point
+        v.emplace_back(rng.uniform(-1, 1), y, 0);
+      }
       return reconstruct(v);
     });
     add("coplanar", "tilted_" + std::to_string(n), ERROR, [n] {
@@ -811,7 +815,12 @@ std::vector<Case> corpus_cases()
     add("coplanar", "near_plane_jitter_" + one_line(std::to_string(jitter)), ANY, [jitter] {
       Rng rng(8);
       std::vector<Point_3> v;
-      for(int i = 0; i < 5000; ++i) v.emplace_back(rng.uniform(-1, 1), rng.uniform(-1, 1), jitter * rng.gaussian());
+      for(int i = 0; i < 5000; ++i)
+      {
+        const double z = jitter * rng.gaussian();  // drawn first, as in Rng::uniform_point
+        const double y = rng.uniform(-1, 1);
+        v.emplace_back(rng.uniform(-1, 1), y, z);
+      }
       return reconstruct(v);
     });
   add("coplanar", "two_parallel_lines", ERROR, [] {
@@ -822,7 +831,11 @@ std::vector<Case> corpus_cases()
   add("coplanar", "two_parallel_planes", ANY, [] {
     Rng rng(9);
     std::vector<Point_3> v;
-    for(int i = 0; i < 4000; ++i) v.emplace_back(rng.uniform(-1, 1), rng.uniform(-1, 1), i % 2 ? 0.1 : -0.1);
+    for(int i = 0; i < 4000; ++i)
+    {
+      const double y = rng.uniform(-1, 1);  // drawn first, as in Rng::uniform_point
+      v.emplace_back(rng.uniform(-1, 1), y, i % 2 ? 0.1 : -0.1);
+    }
     return reconstruct(v);
   });
   add("coplanar", "circle", ERROR, [] {
@@ -1188,7 +1201,7 @@ Result bunny_quality(const std::string& which)
     const CGAL::Bbox_3 ob = scaled_bbox(b, 1.1);
     Rng rng(seed + 1);
     for(int i = 0; i < 360; ++i)
-      pts.emplace_back(rng.uniform(ob.xmin(), ob.xmax()), rng.uniform(ob.ymin(), ob.ymax()), rng.uniform(ob.zmin(), ob.zmax()));
+      pts.push_back(rng.uniform_point(ob));
     in << "36000 surface points + 360 uniform outliers in the bbox scaled by 1.1; ";
   }
   else if(which == "nonuniform" || which == "nonuniform_dense")

@@ -72,6 +72,14 @@ public:
   /// Uniform in [0, 1) with 53 random bits.
   double uniform() { return double(gen_() >> 11) * (1.0 / 9007199254740992.0); }
   double uniform(double a, double b) { return a + (b - a) * uniform(); }
+  /// A uniform point of `b`. It draws z, then y, then x: the order in which GCC evaluated
+  /// three draws written as the arguments of one call (C++ leaves that order unspecified),
+  /// so the samplings of earlier runs stay the same, and now on every compiler.
+  Point_3 uniform_point(const CGAL::Bbox_3& b) {
+    const double z = uniform(b.zmin(), b.zmax());
+    const double y = uniform(b.ymin(), b.ymax());
+    return Point_3(uniform(b.xmin(), b.xmax()), y, z);
+  }
   /// Uniform integer in [0, n), n > 0 (rejection sampling, no modulo bias).
   std::uint64_t uniform_index(std::uint64_t n) {
     const std::uint64_t limit = (~std::uint64_t(0)) - ((~std::uint64_t(0)) % n);
