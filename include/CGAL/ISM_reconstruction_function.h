@@ -105,7 +105,8 @@ public:
   /// (see `thin_handle_depth`); `number_of_tangent_plane_vertices`, the vertices whose side
   /// the oriented tangent planes of the points changed (see `tangent_plane_signs`);
   /// `number_of_misfit_leaves`, the leaves bisected because F missed their points or, where
-  /// the points are sparser, because the surface crosses them (see `surface_refinement_passes`); `number_of_escaped_vertices`, the inside vertices turned
+  /// the points are sparser, because the surface crosses them (see
+  /// `surface_refinement_passes`); `number_of_escaped_vertices`, the inside vertices turned
   /// outside because rays from them leave the box (see `escape_rays`); `neighborhood_coplanarity`, the noise measure of
   /// `point_smoothing_noise`, and `number_of_point_smoothing_passes`; the refinement time
   /// includes the point smoothing;
