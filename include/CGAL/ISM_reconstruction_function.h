@@ -749,6 +749,13 @@ private:
     return radius;
   }
 
+  // A distance in the units of |m_value|: squared with the paper's distance estimate.
+  double as_value(double distance) const
+  {
+    return m_settings.distance_estimate == ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? distance * distance
+                                                                                                : distance;
+  }
+
   // The vertices from `first` on that are not `fixed` and have a point nearer than their
   // voting radius take the side of the oriented tangent planes of their nearest points;
   // returns the number of vertices that changed side. `radius`: the median voting radius.
@@ -758,14 +765,10 @@ private:
     namespace I = ISM_reconstruction_3::internal;
     // no point is nearer than its radius to a vertex whose distance estimate is not (it is
     // at most the distance to the nearest point): only the others look for voters
-    const bool squared = m_settings.distance_estimate == ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE;
     std::vector<char> without_voters(fixed);
     without_voters.resize(m_value.size(), 0);
     for(std::size_t v = 0; v < m_value.size(); ++v)
-    {
-      const double r = m_voting_radius[v], reach = squared ? r * r : r;
-      if(v < first || !(std::abs(m_value[v]) < reach)) without_voters[v] = 1;
-    }
+      if(v < first || !(std::abs(m_value[v]) < as_value(m_voting_radius[v]))) without_voters[v] = 1;
     const std::vector<I::Voters> voters =
         I::voters_of_vertices(m_vertex_xyz, without_voters, neighbors, [&](std::size_t v) { return double(m_voting_radius[v]); });
     const double tiny = 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius()));
@@ -973,7 +976,8 @@ private:
       if(pass >= passes)
       {
         const std::vector<Cell_index> crossed =
-            I::sparse_crossed_leaves(tr, m_vertex_xyz, m_sign, m_value, sparse_leaf_size, maximum_depth());
+            I::sparse_crossed_leaves(tr, m_vertex_xyz, m_sign, m_value, sparse_leaf_size,
+                                     as_value(0.5 * sparse_leaf_size), maximum_depth());
         std::vector<Cell_index> both;
         std::set_union(to_bisect.begin(), to_bisect.end(), crossed.begin(), crossed.end(), std::back_inserter(both));
         to_bisect.swap(both);

@@ -74,8 +74,8 @@ misfit_leaves(const Triangulation& tr, const std::vector<std::array<double, 3> >
   return result;
 }
 
-// The leaves the surface crosses that are longer than `min_size` and whose four vertices are
-// nearer to the points than half of it (their |value|), without those at `max_level`, sorted.
+// The leaves the surface crosses that are longer than `min_size` and whose four vertices have
+// |value| below `max_value` (near the points), without those at `max_level`, sorted.
 // Why: such a leaf of a sparse part can hold a bend of the surface and no point to show F
 // missing it. Traced on the 36k bunny with one half ten times denser: the far query most
 // samplings got wrong lies 1.05 % of the diagonal inside an ear of the sparse half, in a
@@ -87,7 +87,7 @@ template <class Triangulation>
 std::vector<typename Triangulation::Cell_index>
 sparse_crossed_leaves(const Triangulation& tr, const std::vector<std::array<double, 3> >& xyz,
                       const std::vector<signed char>& signs, const std::vector<double>& values, double min_size,
-                      int max_level)
+                      double max_value, int max_level)
 {
   typedef typename Triangulation::Cell_index Cell_index;
   std::vector<Cell_index> result;
@@ -97,7 +97,7 @@ sparse_crossed_leaves(const Triangulation& tr, const std::vector<std::array<doub
     const auto& v = tr.vertices(c);
     if(!is_crossed(v, signs) || !(longest_edge(v, xyz) > min_size)) continue;
     bool near = true;
-    for(int l = 0; l < 4; ++l) near = near && std::abs(values[v[l]]) < 0.5 * min_size;
+    for(int l = 0; l < 4; ++l) near = near && std::abs(values[v[l]]) < max_value;
     if(near) result.push_back(c);
   }
   return result;
