@@ -269,7 +269,7 @@ public:
     const ISM_reconstruction_3::internal::Point_neighbors& neighbors = *m_point_neighbors;
     CGAL_ISM_TIMER_MARK(step, "kd-tree");
     m_value = ISM_reconstruction_3::internal::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign,
-                                                                  m_settings.distance_estimate, near_surface);
+                                                                  working_estimate(), near_surface);
     CGAL_ISM_TIMER_MARK(step, "distances");
     if(m_settings.thin_handle_depth > 0) remove_thin_handles(leaves, boundary, m_value);
     CGAL_ISM_TIMER_MARK(step, "thin handles");
@@ -286,6 +286,7 @@ public:
     m_point_neighbors.reset();
     std::vector<Cell_index>().swap(m_leaf_of_point);
     CGAL_ISM_TIMER_MARK(step, "winding number");
+    square_values();
     m_stats.distance_time = timer.time();
     find_inner_point();
     return report(1.);
@@ -749,11 +750,23 @@ private:
     return radius;
   }
 
-  // A distance in the units of |m_value|: squared with the paper's distance estimate.
-  double as_value(double distance) const
+  // The estimate the steps after the signs work with. The paper's squared distance is
+  // applied once F is final (square_values()): those steps compare |value| with distances
+  // (a leaf's size, a voting radius, an escape distance) and the tangent planes and the
+  // winding number write distances, so with squared values a result depended on the unit of
+  // the coordinates (the bunny scaled by 1000 gave 41,067 output vertices instead of 22,463).
+  ISM_reconstruction_3::Distance_estimate working_estimate() const
   {
-    return m_settings.distance_estimate == ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? distance * distance
-                                                                                                : distance;
+    return m_settings.distance_estimate == ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE
+               ? ISM_reconstruction_3::NEAREST_POINT_DISTANCE
+               : m_settings.distance_estimate;
+  }
+
+  // F of the paper's estimate (4.3): the squared distance, signed
+  void square_values()
+  {
+    if(m_settings.distance_estimate != ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE) return;
+    for(double& f : m_value) f *= std::abs(f);
   }
 
   // The vertices from `first` on that are not `fixed` and have a point nearer than their
@@ -768,7 +781,7 @@ private:
     std::vector<char> without_voters(fixed);
     without_voters.resize(m_value.size(), 0);
     for(std::size_t v = 0; v < m_value.size(); ++v)
-      if(v < first || !(std::abs(m_value[v]) < as_value(m_voting_radius[v]))) without_voters[v] = 1;
+      if(v < first || !(std::abs(m_value[v]) < m_voting_radius[v])) without_voters[v] = 1;
     const std::vector<I::Voters> voters =
         I::voters_of_vertices(m_vertex_xyz, without_voters, neighbors, [&](std::size_t v) { return double(m_voting_radius[v]); });
     const double tiny = 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius()));
@@ -977,7 +990,7 @@ private:
       {
         const std::vector<Cell_index> crossed =
             I::sparse_crossed_leaves(tr, m_vertex_xyz, m_sign, m_value, sparse_leaf_size,
-                                     as_value(0.5 * sparse_leaf_size), maximum_depth());
+                                     0.5 * sparse_leaf_size, maximum_depth());
         std::vector<Cell_index> both;
         std::set_union(to_bisect.begin(), to_bisect.end(), crossed.begin(), crossed.end(), std::back_inserter(both));
         to_bisect.swap(both);
@@ -1005,7 +1018,7 @@ private:
       memory_guard.check(tr.number_of_cells());
       sync_vertices();
       const std::vector<double> d =
-          I::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign, m_settings.distance_estimate, {}, first);
+          I::estimate_distances(m_points, neighbors, m_vertex_xyz, m_sign, working_estimate(), {}, first);
       std::copy(d.begin() + std::ptrdiff_t(first), d.end(), m_value.begin() + std::ptrdiff_t(first));
       m_depth.insert(m_depth.end(), d.begin() + std::ptrdiff_t(first), d.end());
       CGAL_ISM_TIMER_MARK(step, "surface refinement: bisections and distances, new vertices " + std::to_string(m_value.size() - first));

@@ -145,6 +145,28 @@ int main(int argc, char** argv)
     bool as_fresh = fresh.statistics().number_of_leaves == f.statistics().number_of_leaves;
     for(const Point_3& p : probes) as_fresh = as_fresh && fresh(p) == f(p);
     CHECK(as_fresh, "computing again gives the function of a fresh object");
+    // the points times 1024 (exact in binary) give the function times 1024 (the paper's
+    // squared distance: 1024^2) with each distance estimate. The steps after the signs
+    // compared squared values with distances: the bunny times 1000 gave 41,067 output
+    // vertices instead of 22,463 with the paper's estimate.
+    namespace ISM = CGAL::ISM_reconstruction_3;
+    for(ISM::Distance_estimate e : {ISM::NEAREST_POINT_SQUARED_DISTANCE, ISM::NEAREST_POINT_DISTANCE, ISM::LOCAL_PLANE_DISTANCE})
+    {
+      const double s = 1024, unit = e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? s * s : s;
+      std::vector<Point_3> scaled;
+      for(const Point_3& p : pts) scaled.push_back(Point_3(s * p.x(), s * p.y(), s * p.z()));
+      CGAL::ISM_reconstruction_function<K> a(pts), b(scaled);
+      a.compute_implicit_function(CGAL::parameters::distance_estimate(e));
+      b.compute_implicit_function(CGAL::parameters::distance_estimate(e));
+      bool scales = a.statistics().number_of_leaves == b.statistics().number_of_leaves;
+      for(const Point_3& p : probes)
+      {
+        const double fa = CGAL::to_double(a(p)), fb = CGAL::to_double(b(Point_3(s * p.x(), s * p.y(), s * p.z())));
+        scales = scales && std::abs(fb - unit * fa) <= 1e-9 * unit * std::abs(fa);
+      }
+      CHECK(scales, "distance estimate " + std::to_string(int(e)) + ": the points times 1024 give F times " +
+                        (e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? "1024^2" : "1024"));
+    }
     // a cancelled computation leaves no half-made function behind (+1 everywhere)
     const bool completed =
         f.compute_implicit_function(CGAL::parameters::callback(std::function<bool(double)>([](double) { return false; })));

@@ -26,7 +26,8 @@ namespace ISM_reconstruction_3 {
 */
 enum Distance_estimate
 {
-  /// the paper's: the squared distance to the nearest data point (section 4.3)
+  /// the paper's: the squared distance to the nearest data point (section 4.3); the steps
+  /// after the signs work on the distance, and the values are squared once F is final
   NEAREST_POINT_SQUARED_DISTANCE,
   /// the distance to the nearest data point
   NEAREST_POINT_DISTANCE,
