@@ -4,11 +4,14 @@
 // For each: closed and 2-manifold, components and genus of the truth, in/out agreement
 // (F and the output mesh) >= 99.5 % overall and 100 % farther than 1 % of the diagonal,
 // symmetric mean distance <= 0.5 % of the diagonal. Plus the API: named parameters,
-// Polyhedron_3 output, the paper's settings, cancellation, determinism, bad input.
+// Polyhedron_3 output, the paper's settings, cancellation, determinism, other kernels, the
+// unit of the coordinates, bad input.
 //
 // usage: test_reconstruction <directory holding bunny00.off, knot1.off, eight.off, ChineseDragon-10kv.off>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/ism_surface_reconstruction.h>
@@ -17,6 +20,7 @@
 
 #include <iostream>
 #include <sstream>
+#include <type_traits>
 
 using namespace ISM_eval;
 static int failures = 0;
@@ -171,6 +175,45 @@ int main(int argc, char** argv)
     const bool completed =
         f.compute_implicit_function(CGAL::parameters::callback(std::function<bool(double)>([](double) { return false; })));
     CHECK(!completed && f(fresh.get_inner_point()) == 1 && f(probes[0]) == 1, "cancelled: +1 everywhere");
+  }
+
+  // --- other kernels: the method computes in double whatever the kernel, so points of
+  // Simple_cartesian<double> and of the exact-constructions kernel (whose points PMP users
+  // hold) give the surface that Epick gives (Epeck's exact constructions of the output
+  // points round differently: up to 2e-15 measured)
+  {
+    const auto samples = sample_points(make_torus(Point_3(0, 0, 0), 1, 0.4), 8000, 9, 0);
+    struct Surface { int genus = -1; std::vector<double> xyz; std::string faces; };
+    auto reconstruct_with = [&](auto kernel_point) {
+      typedef decltype(kernel_point) P;
+      std::vector<P> points;
+      for(const auto& s : samples) points.push_back(P(s.first.x(), s.first.y(), s.first.z()));
+      CGAL::Surface_mesh<P> out;
+      CGAL::ism_surface_reconstruction(points, out);
+      Surface r;
+      for(auto v : out.vertices())
+        for(int d = 0; d < 3; ++d) r.xyz.push_back(CGAL::to_double(out.point(v)[d]));
+      std::ostringstream faces;
+      for(auto f : out.faces())
+      {
+        for(auto v : CGAL::vertices_around_face(out.halfedge(f), out)) faces << std::size_t(v) << " ";
+        faces << "\n";
+      }
+      r.faces = faces.str();
+      if constexpr(std::is_same<P, Point_3>::value) r.genus = topology(out).genus;
+      return r;
+    };
+    auto same = [](const Surface& a, const Surface& b) {
+      bool ok = a.faces == b.faces && a.xyz.size() == b.xyz.size();
+      for(std::size_t i = 0; ok && i < a.xyz.size(); ++i) ok = std::abs(a.xyz[i] - b.xyz[i]) <= 1e-12;
+      return ok;
+    };
+    const Surface epick = reconstruct_with(Point_3());
+    CHECK(epick.genus == 1 && !epick.faces.empty(), "kernels: Epick gives the torus");
+    CHECK(same(reconstruct_with(CGAL::Simple_cartesian<double>::Point_3()), epick),
+          "kernels: Simple_cartesian<double> gives Epick's surface");
+    CHECK(same(reconstruct_with(CGAL::Exact_predicates_exact_constructions_kernel::Point_3()), epick),
+          "kernels: Epeck gives Epick's surface");
   }
 
   // --- bad input: clear exceptions (the robustness test covers many more cases)
