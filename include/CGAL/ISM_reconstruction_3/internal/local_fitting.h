@@ -79,7 +79,15 @@ public:
     if(!(sum > 0) || !std::isfinite(sum)) return false;
     const Eigen::Vector3d n = solver.eigenvectors().col(0).normalized();
     if(!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) return false;
-    f.normal = {{ float(n[0]), float(n[1]), float(n[2]) }};
+    // Rounded through memory: GCC 12 at -O3 dropped the rounding of n[0] and n[1] where the
+    // caller reads the normal back as double (PCA normals of the torus: x never rounded, at
+    // -O2 always), and kept it in some inlined copies of a TBB loop body, so a run's values
+    // depended on which copy ran a chunk (F differed by 1e-10 between runs under load).
+    for(int d = 0; d < 3; ++d)
+    {
+      volatile float rounded = float(n[d]);
+      f.normal[d] = rounded;
+    }
     const double b[3] = { c[0] + m_ref[0], c[1] + m_ref[1], c[2] + m_ref[2] };
     f.offset = double(f.normal[0]) * b[0] + double(f.normal[1]) * b[1] + double(f.normal[2]) * b[2];
     f.coplanarity_error = float(l[0] / sum);
