@@ -169,11 +169,12 @@ int main(int argc, char** argv)
         const double fa = CGAL::to_double(a(p)), fb = CGAL::to_double(b(Point_3(s * p.x(), s * p.y(), s * p.z())));
         worst = (std::max)(worst, std::abs(fb - unit * fa) / (unit * std::abs(fa)));
       }
-      CHECK(a.statistics().number_of_leaves == b.statistics().number_of_leaves && worst <= 1e-9,
-            "distance estimate " + std::to_string(int(e)) + ": the points times 1024 give F times " +
-                (e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? "1024^2" : "1024") + " (leaves " +
-                std::to_string(a.statistics().number_of_leaves) + " and " +
-                std::to_string(b.statistics().number_of_leaves) + ", F off by " + std::to_string(worst) + ")");
+      std::ostringstream what;  // std::to_string printed the deviations found, 1e-10, as 0.000000
+      what << "distance estimate " << int(e) << ": the points times 1024 give F times "
+           << (e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? "1024^2" : "1024") << " (leaves "
+           << a.statistics().number_of_leaves << " and " << b.statistics().number_of_leaves << ", F off by " << worst
+           << " relative)";
+      CHECK(a.statistics().number_of_leaves == b.statistics().number_of_leaves && worst <= 1e-9, what.str());
     }
     // a cancelled computation leaves no half-made function behind (+1 everywhere)
     const bool completed =
