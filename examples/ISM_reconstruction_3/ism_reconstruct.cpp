@@ -337,6 +337,11 @@ const std::vector<Option>& options()
            "winding number of the points (their normals oriented by the in/out function)",
            [](Settings& s, const std::string&, const std::string&) { s.winding_number_signs = false; },
            [](const Settings& s) { return std::string(s.winding_number_signs ? "on" : "off"); }},
+    Option{"--no-join-islands", "join_islands", nullptr,
+           "do not join, last, an inside cluster but the largest to another across one or two "
+           "outside vertices (a part cut off at a neck too thin for the leaves)",
+           [](Settings& s, const std::string&, const std::string&) { s.join_islands = false; },
+           [](const Settings& s) { return std::string(s.join_islands ? "on" : "off"); }},
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times; 0: never"),

@@ -18,6 +18,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/distance_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/topology_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
+#include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/ISM_reconstruction_3/internal/leaf_vertices.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
@@ -107,7 +108,8 @@ public:
   /// `number_of_misfit_leaves`, the leaves bisected because F missed their points or, where
   /// the points are sparser, because the surface crosses them (see
   /// `surface_refinement_passes`); `number_of_escaped_vertices`, the inside vertices turned
-  /// outside because rays from them leave the box (see `escape_rays`); `neighborhood_coplanarity`, the noise measure of
+  /// outside because rays from them leave the box (see `escape_rays`); `number_of_joined_islands`,
+  /// the inside clusters joined to another (see `join_islands`); `neighborhood_coplanarity`, the noise measure of
   /// `point_smoothing_noise`, and `number_of_point_smoothing_passes`; the refinement time
   /// includes the point smoothing;
   /// `final_energy`, the Ising energy of the signs found, and `all_outside_energy`, that of
@@ -122,6 +124,7 @@ public:
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected by `surface_refinement_passes`
     std::size_t number_of_winding_number_vertices = 0;  ///< vertices re-signed by the winding number of the points (`winding_number_signs`)
     std::size_t number_of_escaped_vertices = 0;  ///< inside vertices turned outside because rays from them leave the box (`escape_rays`)
+    std::size_t number_of_joined_islands = 0;  ///< inside clusters joined to another across one or two vertices (`join_islands`)
     std::size_t number_of_boundary_vertices_set_outside = 0;  ///< box boundary vertices left inside by the last annealing, set outside (only unclamped: `clamp_box_boundary(false)`)
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
@@ -280,12 +283,19 @@ public:
     if(m_settings.escape_rays > 0) remove_escaping_inside(neighbors, leaves, boundary);
     CGAL_ISM_TIMER_MARK(step, "escape rays");
     if(m_settings.winding_number_signs) sign_by_winding_number(neighbors, leaves, boundary);
+    CGAL_ISM_TIMER_MARK(step, "winding number");
+    if(m_settings.join_islands)
+    {
+      m_stats.number_of_joined_islands = ISM_reconstruction_3::internal::join_islands(
+          leaves, boundary, m_sign, m_value, 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
+      m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
+    }
     std::vector<std::array<float, 3> >().swap(m_voting_normals);
     std::vector<double>().swap(m_depth);
     std::vector<float>().swap(m_voting_radius);
     m_point_neighbors.reset();
     std::vector<Cell_index>().swap(m_leaf_of_point);
-    CGAL_ISM_TIMER_MARK(step, "winding number");
+    CGAL_ISM_TIMER_MARK(step, "joined islands");
     square_values();
     m_stats.distance_time = timer.time();
     find_inner_point();

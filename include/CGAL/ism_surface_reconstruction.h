@@ -258,6 +258,11 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamType{Boolean}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
+    \cgalParamNBegin{join_islands}
+      \cgalParamDescription{last, every inside cluster of vertices but the largest is joined to another inside cluster across one or two outside vertices, those of least |F| (nearest to the points), if that lowers the number of components of the surface by one and adds no handle; a cluster farther than that, about two point spacings near the surface, stays a component of its own. This joins back a part cut off at a neck too thin for the leaves where the points are sparse; `false`: never (the paper). Measured on the bunny, 20 samplings each: one component (and genus 0) on 20 of 20 at 3,000 points instead of 11, 20 instead of 19 at 4,000 and 6,000, 19 instead of 18 at 8,000 (the last one has genus 1 either way); at 36k points, 160 samplings with 0.5 % noise or one half ten times denser and the meshes of test_reconstruction (two spheres, nested spheres): the same output}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{point_smoothing_iterations}
       \cgalParamDescription{before the refinement, if the points are noisy (`point_smoothing_noise`), each point is moved along the normal of its neighbours' PCA plane onto a quadric fitted by least squares to its `point_smoothing_neighbors` nearest points (jet smoothing), this many times; `0`: never (the paper). Measured on the bunny at 36k points with gaussian noise of 0.5 % of the diagonal, 6 samplings: 14 queries farther than 1 % of the diagonal on the wrong side in all instead of 221, mean distance 0.124-0.130 % of the diagonal instead of 0.24-0.27 %, genus 1 on one sampling instead of two; clean points and noise up to about 0.2 % are left as they are (see `point_smoothing_noise`)}
       \cgalParamType{`int`, in [0, 100]}
@@ -309,7 +314,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
-      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `point_smoothing_iterations(0)`, `crossing_neighbors(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `join_islands(false)`, `point_smoothing_iterations(0)`, `crossing_neighbors(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd

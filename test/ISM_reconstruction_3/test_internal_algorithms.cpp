@@ -11,6 +11,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/point_smoothing.h>
 #include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
 #include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
+#include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -519,6 +520,20 @@ double drilled_sphere_distance(const Point& p)
   return -(std::min)(-ball, r - 0.025);
 }
 
+// the sign of each value, and the vertices on the grid's boundary (the cube [-1, 1]^3)
+void signs_and_boundary(const Tet_mesh& m, const std::vector<double>& values, std::vector<signed char>& signs,
+                        std::vector<char>& boundary)
+{
+  signs.assign(values.size(), 1);
+  boundary.assign(values.size(), 0);
+  for(std::size_t v = 0; v < values.size(); ++v)
+  {
+    if(values[v] < 0) signs[v] = -1;
+    for(int d = 0; d < 3; ++d)
+      if(std::abs(std::abs(m.points[v][d]) - 1.) < 1e-9) boundary[v] = 1;
+  }
+}
+
 void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::string& name, long euler_before,
                       long euler_after, double relative_depth = 0.58, bool local_size = false)
 {
@@ -528,14 +543,9 @@ void thin_handle_test(const Tet_mesh& m, double (*f)(const Point&), const std::s
   internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
   CHECK(check_surface(pts, tris).euler == euler_before, name << ": the input has Euler characteristic "
                                                             << check_surface(pts, tris).euler << ", not " << euler_before);
-  std::vector<signed char> signs(values.size());
-  std::vector<char> boundary(values.size(), 0);
-  for(std::size_t v = 0; v < values.size(); ++v)
-  {
-    signs[v] = values[v] < 0 ? -1 : 1;
-    for(int d = 0; d < 3; ++d)
-      if(std::abs(std::abs(m.points[v][d]) - 1.) < 1e-9) boundary[v] = 1;
-  }
+  std::vector<signed char> signs;
+  std::vector<char> boundary;
+  signs_and_boundary(m, values, signs, boundary);
   // the median longest edge of a Kuhn tet is the cube diagonal, h sqrt(3): depth 0.05 > 0.03
   const std::size_t changed = internal::remove_thin_handles(Tet_mesh_leaves{m}, m.points, boundary, relative_depth,
                                                             signs, values, nullptr, local_size);
@@ -1076,6 +1086,60 @@ void point_normals_test()
   CHECK(one == two, "point normals: 1 and 2 threads differ");
 }
 
+// Islands on the 40^3 Kuhn grid (spacing 0.05): two boxes `gap` grid layers apart are joined
+// across one or two outside vertices and stay apart across three; a ring cut at two places
+// into two arcs is joined at one cut only (joining both would make a handle, which the
+// Euler characteristic cannot tell from a join).
+double box_value(const Point& p, double x0, double x1)
+{
+  const double c[3] = { 0.5 * (x0 + x1), 0., 0. }, half[3] = { 0.5 * (x1 - x0), 0.3, 0.3 };
+  double d = -1e9;
+  for(int k = 0; k < 3; ++k) d = (std::max)(d, std::abs(p[k] - c[k]) - half[k]);
+  return d;
+}
+int joined_gap_layers = 1;
+double two_boxes_value(const Point& p)
+{
+  // inside vertices of the left box up to x = -0.05, of the right one from 0.05 (gap - 1)
+  return (std::min)(box_value(p, -0.475, -0.025), box_value(p, 0.025 + 0.05 * (joined_gap_layers - 1), 0.475));
+}
+double cut_ring_value(const Point& p) { return (std::max)(torus_value(p), 0.025 - std::abs(p[0])); }
+
+void join_islands_case(const Tet_mesh& m, double (*f)(const Point&), const std::string& name, long euler_before,
+                       long euler_after, std::size_t joins)
+{
+  std::vector<double> values = sample(m, f);
+  std::vector<signed char> signs;
+  std::vector<char> boundary;
+  signs_and_boundary(m, values, signs, boundary);
+  std::vector<Point> pts;
+  std::vector<Triangle> tris;
+  internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
+  CHECK(check_surface(pts, tris).euler == euler_before, name << ": the input has Euler characteristic "
+                                                            << check_surface(pts, tris).euler << ", not " << euler_before);
+  const std::size_t joined = internal::join_islands(Tet_mesh_leaves{m}, boundary, signs, values, 1e-9);
+  for(std::size_t v = 0; v < values.size(); ++v)
+    CHECK((values[v] < 0) == (signs[v] < 0), name << ": value and sign of vertex " << v << " disagree");
+  internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
+  const Surface_check c = check_surface(pts, tris);
+  CHECK(c.closed_manifold, name << ": not a closed 2-manifold after joining: " << c.error);
+  CHECK(c.euler == euler_after && joined == joins, name << ": " << joined << " joins, Euler characteristic " << c.euler
+                                                        << "; expected " << joins << " and " << euler_after);
+  std::cout << "  " << name << ": " << joined << " joins, chi " << euler_before << " -> " << c.euler << std::endl;
+}
+
+void join_islands_test(const Tet_mesh& grid)
+{
+  for(int gap = 1; gap <= 3; ++gap)
+  {
+    joined_gap_layers = gap;
+    join_islands_case(grid, two_boxes_value, "two boxes " + std::to_string(gap) + " vertex layers apart", 4,
+                      gap <= 2 ? 2 : 4, gap <= 2 ? 1 : 0);
+  }
+  join_islands_case(grid, cut_ring_value, "a ring cut in two arcs", 4, 2, 1);
+  join_islands_case(grid, torus_value, "a torus (one cluster)", 0, 0, 0);
+}
+
 int main()
 {
   std::cout << "Ising annealing" << std::endl;
@@ -1121,6 +1185,9 @@ int main()
 
   std::cout << "Escape rays" << std::endl;
   escape_rays_test(kuhn_grid(40, false));
+
+  std::cout << "Joined islands" << std::endl;
+  join_islands_test(grid);
 
   std::cout << "Winding number" << std::endl;
   winding_number_test(kuhn_grid(40, false));

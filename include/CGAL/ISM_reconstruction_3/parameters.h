@@ -65,6 +65,7 @@ enum point_smoothing_noise_t { point_smoothing_noise };
 enum memory_limit_t { memory_limit };
 enum escape_rays_t { escape_rays };
 enum winding_number_signs_t { winding_number_signs };
+enum join_islands_t { join_islands };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -114,6 +115,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(point_smoothing_noise)
 CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
 CGAL_ISM_ADD_NAMED_PARAMETER(winding_number_signs)
+CGAL_ISM_ADD_NAMED_PARAMETER(join_islands)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

@@ -76,6 +76,9 @@ struct Settings
   /*! last, the vertices of the surface's leaves away from the points are re-signed by the winding number of the
       points, their normals oriented by F, where it is clearly inside or outside; false: never (the paper) */
   bool winding_number_signs = true;
+  /*! last, an inside cluster but the largest is joined to another across one or two outside vertices where
+      this adds no handle (a part cut off at a neck too thin for the leaves); false: never (the paper) */
+  bool join_islands = true;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
@@ -103,6 +106,7 @@ struct Settings
     s.surface_refinement_passes = 0;
     s.escape_rays = 0;
     s.winding_number_signs = false;
+    s.join_islands = false;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
     s.crossing_neighbors = 0;
@@ -201,6 +205,7 @@ Settings settings_from_parameters(const NamedParameters& np)
       choose_parameter(get_parameter(np, inp::surface_refinement_tolerance), d.surface_refinement_tolerance);
   s.escape_rays = choose_parameter(get_parameter(np, inp::escape_rays), d.escape_rays);
   s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
+  s.join_islands = choose_parameter(get_parameter(np, inp::join_islands), d.join_islands);
   s.point_smoothing_iterations =
       choose_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations);
   s.point_smoothing_neighbors = choose_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors);

@@ -218,9 +218,10 @@ std::vector<std::array<double, 3> > point_dipoles(const std::vector<std::array<d
 // over the leaves `cells` (all of them if empty) and the crossed edges of these leaves for
 // which `counts(a, b)` holds: the marching tetrahedra put a surface vertex on every crossed
 // edge and one triangle in a leaf split 3-1, two in one split 2-2; on a closed triangulated
-// surface E = 3F/2, so 2 chi = 2V - F = 2 (components - genus). Flipping a set of vertices
+// surface E = 3F/2, so 2 chi = 2V - F = 4 (components - genus). Flipping a set of vertices
 // changes only the edges with an end in it and the leaves around it, so the count restricted
-// to these changes as 2 chi of the whole surface does: down by 2, a handle more.
+// to these changes as 2 chi of the whole surface does: down by 4, a handle more (or a
+// component fewer).
 template <class Leaves, class Counts>
 long twice_euler_characteristic(const Leaves& leaves, const std::vector<std::uint32_t>& cells, const Counts& counts,
                                 const std::vector<signed char>& signs, std::vector<std::uint64_t>& edges)
