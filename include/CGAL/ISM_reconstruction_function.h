@@ -283,18 +283,20 @@ public:
     if(m_settings.escape_rays > 0) remove_escaping_inside(neighbors, leaves, boundary);
     CGAL_ISM_TIMER_MARK(step, "escape rays");
     if(m_settings.winding_number_signs) sign_by_winding_number(neighbors, leaves, boundary);
+    std::vector<std::array<float, 3> >().swap(m_voting_normals);
+    std::vector<double>().swap(m_depth);
+    std::vector<float>().swap(m_voting_radius);
+    m_point_neighbors.reset();
+    std::vector<Cell_index>().swap(m_leaf_of_point);
     CGAL_ISM_TIMER_MARK(step, "winding number");
+    // after the arrays above are freed: with several inside clusters the joining holds about
+    // 50 bytes a vertex
     if(m_settings.join_islands)
     {
       m_stats.number_of_joined_islands = ISM_reconstruction_3::internal::join_islands(
           leaves, boundary, m_sign, m_value, 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
       m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     }
-    std::vector<std::array<float, 3> >().swap(m_voting_normals);
-    std::vector<double>().swap(m_depth);
-    std::vector<float>().swap(m_voting_radius);
-    m_point_neighbors.reset();
-    std::vector<Cell_index>().swap(m_leaf_of_point);
     CGAL_ISM_TIMER_MARK(step, "joined islands");
     square_values();
     m_stats.distance_time = timer.time();
