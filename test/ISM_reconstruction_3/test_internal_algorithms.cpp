@@ -417,7 +417,8 @@ Surface_check check_surface(const std::vector<Point>& pts, const std::vector<Tri
   return r;
 }
 
-std::vector<double> sample(const Tet_mesh& m, double (*f)(const Point&))
+template <class Function>
+std::vector<double> sample(const Tet_mesh& m, const Function& f)
 {
   std::vector<double> v(m.points.size());
   for(std::size_t i = 0; i < v.size(); ++i)
@@ -1097,15 +1098,10 @@ double box_value(const Point& p, double x0, double x1)
   for(int k = 0; k < 3; ++k) d = (std::max)(d, std::abs(p[k] - c[k]) - half[k]);
   return d;
 }
-int joined_gap_layers = 1;
-double two_boxes_value(const Point& p)
-{
-  // inside vertices of the left box up to x = -0.05, of the right one from 0.05 (gap - 1)
-  return (std::min)(box_value(p, -0.475, -0.025), box_value(p, 0.025 + 0.05 * (joined_gap_layers - 1), 0.475));
-}
 double cut_ring_value(const Point& p) { return (std::max)(torus_value(p), 0.025 - std::abs(p[0])); }
 
-void join_islands_case(const Tet_mesh& m, double (*f)(const Point&), const std::string& name, long euler_before,
+template <class Function>
+void join_islands_case(const Tet_mesh& m, const Function& f, const std::string& name, long euler_before,
                        long euler_after, std::size_t joins)
 {
   std::vector<double> values = sample(m, f);
@@ -1132,8 +1128,11 @@ void join_islands_test(const Tet_mesh& grid)
 {
   for(int gap = 1; gap <= 3; ++gap)
   {
-    joined_gap_layers = gap;
-    join_islands_case(grid, two_boxes_value, "two boxes " + std::to_string(gap) + " vertex layers apart", 4,
+    // inside vertices of the left box up to x = -0.05, of the right one from 0.05 (gap - 1)
+    const auto two_boxes = [gap](const Point& p) {
+      return (std::min)(box_value(p, -0.475, -0.025), box_value(p, 0.025 + 0.05 * (gap - 1), 0.475));
+    };
+    join_islands_case(grid, two_boxes, "two boxes " + std::to_string(gap) + " vertex layers apart", 4,
                       gap <= 2 ? 2 : 4, gap <= 2 ? 1 : 0);
   }
   join_islands_case(grid, cut_ring_value, "a ring cut in two arcs", 4, 2, 1);

@@ -9,6 +9,7 @@
 #define CGAL_ISM_RECONSTRUCTION_3_INTERNAL_ISLAND_JOINING_H
 
 #include <CGAL/ISM_reconstruction_3/internal/disjoint_sets.h>
+#include <CGAL/ISM_reconstruction_3/internal/topology_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
 
 #include <algorithm>
@@ -45,16 +46,12 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
   std::size_t joined = 0;
   for(;;)
   {
-    Disjoint_sets clusters(n);
-    for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
-      unite_same_sign(leaves.vertices(Cell_index(c)), signs, [](std::uint32_t) { return true; }, clusters);
-    std::vector<std::uint32_t> size(n, 0);
-    for(std::size_t v = 0; v < n; ++v)
-      if(signs[v] < 0) ++size[clusters.find(std::uint32_t(v))];
+    std::vector<std::uint32_t> root, size;
+    equal_sign_clusters(leaves, signs, root, size);
     std::uint32_t largest = none;
     std::size_t number_of_clusters = 0;
     for(std::size_t v = 0; v < n; ++v)
-      if(size[v] > 0)
+      if(size[v] > 0 && signs[v] < 0)
       {
         ++number_of_clusters;
         if(largest == none || size[v] > size[largest]) largest = std::uint32_t(v);
@@ -71,7 +68,7 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
           for(int j = 0; j < 4; ++j)
             if(signs[v[j]] < 0)
             {
-              const std::uint32_t r = clusters.find(std::uint32_t(v[j]));
+              const std::uint32_t r = root[v[j]];
               std::array<std::uint32_t, 2>& a = near[v[i]];
               if(a[0] == none) a[0] = r;
               else if(a[0] != r && a[1] == none) a[1] = r;

@@ -232,6 +232,29 @@ std::vector<char> box_boundary_vertices(const Triangulation& tr)
   return boundary;
 }
 
+// Clusters of vertices of equal sign connected by leaf edges, by union-find over the edges of
+// each leaf: one pass over the leaves in memory order (the edge list of the triangulation,
+// which an adjacency search needs, took 0.45 s of the dragon's 437k points). `root[v]`: the
+// vertex that names v's cluster (of v's sign); `size[r]`: the number of vertices of the
+// cluster named r, 0 if r names none.
+template <class Triangulation>
+void equal_sign_clusters(const Triangulation& tr, const std::vector<signed char>& signs,
+                         std::vector<std::uint32_t>& root, std::vector<std::uint32_t>& size)
+{
+  typedef typename Triangulation::Cell_index Cell_index;
+  const std::size_t n = signs.size();
+  Disjoint_sets clusters(n);
+  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
+    if(tr.is_leaf(c)) unite_same_sign(tr.vertices(c), signs, [](std::uint32_t) { return true; }, clusters);
+  root.resize(n);
+  size.assign(n, 0);
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    root[v] = clusters.find(std::uint32_t(v));
+    ++size[root[v]];
+  }
+}
+
 // Flips small islands of the in/out labelling: a cluster of inside vertices (connected by
 // leaf edges) smaller than `fraction` of the largest inside cluster becomes outside, and a
 // cluster of outside vertices that does not reach the box boundary and is smaller than that
@@ -241,23 +264,13 @@ template <class Triangulation>
 std::size_t remove_islands(const Triangulation& tr, std::vector<signed char>& signs,
                            const std::vector<char>& boundary, double fraction)
 {
-  typedef typename Triangulation::Cell_index Cell_index;
   const std::size_t n = signs.size();
-  // clusters of equal sign by union-find over the edges of each leaf: one pass over the
-  // leaves in memory order (the edge list of the triangulation, which an adjacency search
-  // needs, took 0.45 s of the dragon's 437k points)
-  Disjoint_sets clusters(n);
-  for(Cell_index c = 0; c < Cell_index(tr.number_of_cells()); ++c)
-    if(tr.is_leaf(c)) unite_same_sign(tr.vertices(c), signs, [](std::uint32_t) { return true; }, clusters);
-  // per root: size and whether the cluster reaches the box boundary
-  std::vector<std::uint32_t> root(n), size(n, 0);
+  std::vector<std::uint32_t> root, size;
+  equal_sign_clusters(tr, signs, root, size);
+  // per root: whether the cluster reaches the box boundary
   std::vector<char> touches_boundary(n, 0);
   for(std::size_t v = 0; v < n; ++v)
-  {
-    root[v] = clusters.find(std::uint32_t(v));
-    ++size[root[v]];
     if(boundary[v]) touches_boundary[root[v]] = 1;
-  }
   std::size_t largest_inside = 0;
   for(std::size_t v = 0; v < n; ++v)
     if(root[v] == v && signs[v] < 0) largest_inside = (std::max)(largest_inside, std::size_t(size[v]));
