@@ -35,7 +35,11 @@ namespace internal {
 // nested spheres). Each join flips the bridge of least |value| (its vertices nearest the
 // points) and is kept only if 2 chi of the surface falls by exactly 4: one component fewer,
 // no handle more. The box boundary stays outside, so that the surface stays closed. Returns
-// the number of joins; `tiny`: the value of a flipped vertex whose value was 0.
+// the number of joins; `tiny`: the value of a flipped vertex whose value was 0. Joining
+// already after the annealing, before the island removal (clusters of 5 vertices or more),
+// to keep a sparse ear that the removal takes as a speck (non-uniform bunny, seed 199, 12
+// vertices): the bar met on 56 of 80 non-uniform samplings (seeds 21-100) against 67; the
+// annealing's other specks of that size, joined, left bumps and a handle.
 template <class Leaves>
 std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary, std::vector<signed char>& signs,
                          std::vector<double>& values, double tiny)
