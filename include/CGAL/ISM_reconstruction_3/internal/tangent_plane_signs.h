@@ -54,10 +54,10 @@ inline void estimate_point_normals(const std::vector<std::array<double, 3> >& po
 // `radius_of(v)` and the vertex is not on the box boundary (`fixed`: those stay outside so
 // that the surface stays closed), else none (all entries `none`). Only these points need an
 // oriented normal: on the dragon (437k points) they are about a third of the points. A
-// tighter gate, the nearest point within 0.6 times the 12th nearest (where a sparse gap is
-// under two spacings wide the 6 nearest come from both walls, oriented alike), met the
-// robustness bar on fewer samplings (seeds 21-100: non-uniform 65 against 67, 0.5 % noise
-// 71 against 76).
+// tighter gate, the nearest point within 0.6 times the 12th nearest (against the webs a
+// sparse sampling leaves in a gap under two spacings wide: a wall's normals oriented the
+// wrong way vote its vertices a spacing away inside), met the robustness bar on fewer
+// samplings (seeds 21-100: non-uniform 65 against 67, 0.5 % noise 71 against 76).
 typedef std::array<std::uint32_t, 6> Voters;
 constexpr std::uint32_t none = std::uint32_t(-1);
 
