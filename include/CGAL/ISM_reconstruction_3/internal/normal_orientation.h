@@ -134,7 +134,9 @@ Orientation_test ism_orientation_of(const Function& function, const std::array<d
 // normal, right for one wall, and the propagation carries that side along the other wall,
 // whose points then vote the gap beside it inside (a web). Dropping such a point's vote where
 // its weak decision disagrees (relative difference 0.5 or more) was no net gain over 160
-// samplings (development notes, session 31).
+// samplings (development notes, session 31); carrying the propagation only through points
+// of one sheet (low coplanarity error) changed none of the webs: the rim point's
+// neighbourhood is flat enough, its walls meeting at the tip (session 32).
 inline void propagate_orientations(const std::vector<std::array<double, 3> >& points,
                                    const std::vector<std::array<double, 3> >& normals,
                                    std::vector<Orientation_test>& tests, unsigned int k,
