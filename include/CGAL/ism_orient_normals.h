@@ -75,7 +75,8 @@ estimate_normals(const K& k, const Named_function_parameters<T, Tag, Base>& np)
   within one leaf of the triangulation around it. The few others (where the in/out model
   missed a piece of the surface, or far from the surface) take the orientation of their
   oriented nearest neighbours, propagated along the most parallel normals first as in
-  `mst_orient_normals()`, but from every directly oriented point at once and never farther
+  `mst_orient_normals()`, but from every directly oriented point at once (except one that
+  its directly oriented neighbours along the tangent plane contradict) and never farther
   than twice the local leaf size per step; a point that this propagation does not reach is
   oriented by the sign of the central difference of the function along its normal if that
   is clear, and is otherwise left unoriented.

@@ -12,6 +12,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
 #include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
 #include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
+#include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -1087,6 +1088,95 @@ void point_normals_test()
   CHECK(one == two, "point normals: 1 and 2 threads differ");
 }
 
+// The propagation of orientations (normal_orientation.h). (1) A 30x30 grid of the plane z = 0,
+// normals +-z, every 7th point a confident seed saying "+z is outside", one of them saying the
+// opposite: the contradicted seed is overruled, and every point ends up +z. (2) A folded sheet
+// (two walls z = 0 and z = 0.05, 0.05 apart, joined by a half-tube rim at x = 1), seeded on
+// the lower wall only: the lower wall is outside below (-z), the upper above (+z). The rim's
+// points, marked as not one sheet, must not pass the lower wall's side on: the upper wall
+// stays unoriented or right, never "-z outside".
+void propagation_test()
+{
+  using internal::Orientation_test;
+  {
+    std::vector<std::array<double, 3> > points, normals;
+    for(int i = 0; i < 30; ++i)
+      for(int j = 0; j < 30; ++j)
+      {
+        points.push_back({{ 0.01 * i, 0.01 * j, 0. }});
+        normals.push_back({{ 0., 0., (i + j) % 2 ? 1. : -1. }});
+      }
+    std::vector<Orientation_test> tests(points.size());
+    std::size_t wrong_seed = 15 * 30 + 15;
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      tests[k].leaf_size = 0.02;
+      if(k % 7 == 0 || k == wrong_seed)
+      {
+        tests[k].confident = true;
+        tests[k].sign = static_cast<signed char>(normals[k][2] > 0 ? 1 : -1);
+        tests[k].relative = 1.;
+      }
+    }
+    tests[wrong_seed].sign = static_cast<signed char>(-tests[wrong_seed].sign);
+    internal::propagate_orientations(points, normals, tests, 18, 0.5);
+    std::size_t wrong = 0;
+    for(std::size_t k = 0; k < points.size(); ++k) wrong += tests[k].sign * normals[k][2] <= 0;
+    CHECK(wrong == 0, "propagation: " << wrong << " of 900 plane points point inside (one seed contradicted by its neighbours)");
+  }
+  {
+    const double h = 0.025, pi = 3.14159265358979323846;
+    std::vector<std::array<double, 3> > points, normals;
+    std::vector<char> one_sheet;
+    std::vector<int> wall;  // 0 lower, 1 upper, 2 rim
+    for(int j = 0; j < 20; ++j)
+    {
+      const double y = 0.01 * j;
+      for(int i = 0; i <= 100; ++i)
+        for(int w = 0; w < 2; ++w)
+        {
+          points.push_back({{ 0.01 * i, y, 2. * h * w }});
+          normals.push_back({{ 0., 0., 1. }});  // unoriented: both walls alike
+          one_sheet.push_back(1);
+          wall.push_back(w);
+        }
+      for(int a = 1; a < 8; ++a)
+      {
+        const double t = -0.5 * pi + pi * a / 8.;
+        points.push_back({{ 1. + h * std::cos(t), y, h + h * std::sin(t) }});
+        // a rim point's neighbourhood spans both walls: its fitted normal is the mid-plane's
+        normals.push_back({{ 0., 0., 1. }});
+        one_sheet.push_back(0);
+        wall.push_back(2);
+      }
+    }
+    std::vector<Orientation_test> tests(points.size());
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      tests[k].leaf_size = 0.02;
+      if(wall[k] == 0 && points[k][0] < 0.3)
+      {
+        tests[k].confident = true;
+        tests[k].sign = -1;  // +z points inside the fold
+        tests[k].relative = 1.;
+      }
+    }
+    std::vector<Orientation_test> without = tests;
+    internal::propagate_orientations(points, normals, tests, 18, 0.5, one_sheet);
+    internal::propagate_orientations(points, normals, without, 18, 0.5);
+    std::size_t upper_wrong = 0, upper_wrong_without = 0, lower_wrong = 0;
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      if(wall[k] == 1) { upper_wrong += tests[k].sign < 0; upper_wrong_without += without[k].sign < 0; }
+      if(wall[k] == 0) lower_wrong += tests[k].sign != -1;
+    }
+    CHECK(lower_wrong == 0, "propagation: " << lower_wrong << " lower-wall points of the fold not oriented outside (-z)");
+    CHECK(upper_wrong == 0, "propagation: " << upper_wrong << " upper-wall points of the fold oriented across the rim");
+    // the case is one the rule is needed for
+    CHECK(upper_wrong_without > 0, "propagation: without the one-sheet rule the rim did not turn the upper wall");
+  }
+}
+
 // Islands on the 40^3 Kuhn grid (spacing 0.05): two boxes `gap` grid layers apart are joined
 // across one or two outside vertices and stay apart across three; a ring cut at two places
 // into two arcs is joined at one cut only (joining both would make a handle, which the
@@ -1181,6 +1271,9 @@ int main()
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();
+
+  std::cout << "Orientation propagation" << std::endl;
+  propagation_test();
 
   std::cout << "Escape rays" << std::endl;
   escape_rays_test(kuhn_grid(40, false));

@@ -129,53 +129,30 @@ Orientation_test ism_orientation_of(const Function& function, const std::array<d
 // followed: it would jump between parts the function separates, which are at least a leaf
 // apart. A point it cannot reach keeps its weak decision if that is strong enough, else
 // stays unoriented (`sign` 0).
-// Where it still goes wrong: a part thinner than a 12-neighbourhood whose signs were lost (the
-// sparse half's ear base, non-uniform bunny): a confident point at its rim has the mid-plane's
-// normal, right for one wall, and the propagation carries that side along the other wall,
-// whose points then vote the gap beside it inside (a web). Dropping such a point's vote where
-// its weak decision disagrees (relative difference 0.5 or more) was no net gain over 160
-// samplings (development notes, session 31); carrying the propagation only through points
-// of one sheet (low coplanarity error) changed none of the webs: the rim point's
-// neighbourhood is flat enough, its walls meeting at the tip (session 32).
+//
+// Two guards against one wrong seed orienting a whole part the Ising signs lost (session 33:
+// the non-uniform bunny with its sparse half taken across z, both ears sparse; one ear's
+// 143 voting points got their side from one confident point at the ear's base, where the
+// function had filled the concave corner, and grew a web 6 % of the diagonal high):
+// - a confident point that its confident neighbours of the same sheet (seen along the
+//   tangent plane, normals within 60 degrees) contradict more than they agree with is not a
+//   seed (at that ear base: 8 of its 18 nearest points contradicted it, one agreed);
+// - a point that is not `one_sheet` (a thin part's rim, whose neighbourhood spans both walls)
+//   takes an orientation but does not pass it on: the rim's mid-plane normal would carry one
+//   wall's side onto the other wall (the same ear's tip, and the webs of session 31).
+// `one_sheet` empty: every point passes it on. Neither guard is enough alone: with the seed
+// guard only, that ear's new (right) seed had its side turned at the ear's tip (73 wrong
+// voting points, genus 5 still); the one-sheet rule alone (session 32) changed none of the
+// webs of the sparse half taken across x. Dropping the votes of points whose weak decision
+// disagrees was no net gain (session 31).
 inline void propagate_orientations(const std::vector<std::array<double, 3> >& points,
                                    const std::vector<std::array<double, 3> >& normals,
                                    std::vector<Orientation_test>& tests, unsigned int k,
-                                   double min_weak_relative_difference)
+                                   double min_weak_relative_difference,
+                                   const std::vector<char>& one_sheet = std::vector<char>())
 {
   const std::size_t size = points.size();
-  std::vector<std::uint32_t> uncertain;
-  for(std::size_t i = 0; i < size; ++i)
-    if(!tests[i].confident) uncertain.push_back(std::uint32_t(i));
-  if(uncertain.empty()) return;
-
-  const Point_neighbors neighbors(points);
-  const unsigned int kk = unsigned((std::min<std::size_t>)(k + 1, size));
-  std::vector<std::vector<std::uint32_t> > knn(uncertain.size());
-  auto query = [&](std::size_t u) {
-    neighbors.for_nearest(points[uncertain[u]], kk, [&](std::uint32_t i, double) {
-      if(i != uncertain[u]) knn[u].push_back(i);
-    });
-  };
-  for_chunks(0, uncertain.size(), 64, [&](std::size_t lo, std::size_t hi) {
-    for(std::size_t u = lo; u < hi; ++u) query(u);
-  });
-
-  // undirected adjacency (compressed rows) of the edges with at least one uncertain end
-  std::vector<std::size_t> offset(size + 1, 0);
-  for(std::size_t u = 0; u < uncertain.size(); ++u)
-    for(std::uint32_t j : knn[u]) { ++offset[uncertain[u] + 1]; ++offset[j + 1]; }
-  for(std::size_t i = 0; i < size; ++i) offset[i + 1] += offset[i];
-  std::vector<std::uint32_t> adjacency(offset[size]);
-  {
-    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for(std::size_t u = 0; u < uncertain.size(); ++u)
-      for(std::uint32_t j : knn[u])
-      {
-        adjacency[fill[uncertain[u]]++] = j;
-        adjacency[fill[j]++] = uncertain[u];
-      }
-  }
-
+  if(size == 0) return;
   auto dot = [&](std::uint32_t i, std::uint32_t j) {
     const auto &a = normals[i], &b = normals[j];
     const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
@@ -202,6 +179,57 @@ inline void propagate_orientations(const std::vector<std::array<double, 3> >& po
     }
     return true;
   };
+
+  const Point_neighbors neighbors(points);
+  const unsigned int kk = unsigned((std::min<std::size_t>)(k + 1, size));
+  std::vector<char> contradicted(size, 0);
+  for_chunks(0, size, 64, [&](std::size_t lo, std::size_t hi) {
+    for(std::size_t i = lo; i < hi; ++i)
+    {
+      if(!tests[i].confident) continue;
+      double agree = 0, disagree = 0;
+      neighbors.for_nearest(points[i], kk, [&](std::uint32_t j, double) {
+        if(j == i || !tests[j].confident || !is_tangential(std::uint32_t(i), j)) return;
+        const double c = dot(std::uint32_t(i), j);
+        if(!(std::abs(c) >= 0.5)) return;
+        ((c > 0) == (tests[i].sign == tests[j].sign) ? agree : disagree) += std::abs(c);
+      });
+      contradicted[i] = disagree > agree;
+    }
+  });
+  for(std::size_t i = 0; i < size; ++i)
+    if(contradicted[i]) tests[i].confident = false;
+
+  std::vector<std::uint32_t> uncertain;
+  for(std::size_t i = 0; i < size; ++i)
+    if(!tests[i].confident) uncertain.push_back(std::uint32_t(i));
+  if(uncertain.empty()) return;
+  std::vector<std::vector<std::uint32_t> > knn(uncertain.size());
+  auto query = [&](std::size_t u) {
+    neighbors.for_nearest(points[uncertain[u]], kk, [&](std::uint32_t i, double) {
+      if(i != uncertain[u]) knn[u].push_back(i);
+    });
+  };
+  for_chunks(0, uncertain.size(), 64, [&](std::size_t lo, std::size_t hi) {
+    for(std::size_t u = lo; u < hi; ++u) query(u);
+  });
+
+  // undirected adjacency (compressed rows) of the edges with at least one uncertain end
+  std::vector<std::size_t> offset(size + 1, 0);
+  for(std::size_t u = 0; u < uncertain.size(); ++u)
+    for(std::uint32_t j : knn[u]) { ++offset[uncertain[u] + 1]; ++offset[j + 1]; }
+  for(std::size_t i = 0; i < size; ++i) offset[i + 1] += offset[i];
+  std::vector<std::uint32_t> adjacency(offset[size]);
+  {
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for(std::size_t u = 0; u < uncertain.size(); ++u)
+      for(std::uint32_t j : knn[u])
+      {
+        adjacency[fill[uncertain[u]]++] = j;
+        adjacency[fill[j]++] = uncertain[u];
+      }
+  }
+
   std::vector<char> oriented(size, 0);
   std::vector<signed char> sign(size, 0);
   typedef std::pair<double, std::pair<std::uint32_t, std::uint32_t> > Edge;  // |cos|, (from, to)
@@ -232,7 +260,7 @@ inline void propagate_orientations(const std::vector<std::array<double, 3> >& po
     if(oriented[j]) continue;
     oriented[j] = 1;
     sign[j] = static_cast<signed char>(dot(i, j) >= 0 ? sign[i] : -sign[i]);
-    push_edges(j);
+    if(one_sheet.empty() || one_sheet[j]) push_edges(j);
   }
   for(std::uint32_t i : uncertain)
   {
