@@ -30,24 +30,33 @@ namespace internal {
 // the tangent planes and the surface refinement sign a few vertices beyond it inside; those
 // become a second component floating a leaf away from the body, too large for the island
 // removal to take as a speck (bunny00, 20 samplings each: two components on 9 at 3,000
-// points, 1 at 4,000 and 6,000, 1 at 8,000). Objects farther apart than two vertices, about
-// two point spacings near the surface, stay apart (test_reconstruction's two spheres, the
-// nested spheres). Each join flips the bridge of least |value| (its vertices nearest the
-// points) and is kept only if 2 chi of the surface falls by exactly 4: one component fewer,
-// no handle more. The box boundary stays outside, so that the surface stays closed. Returns
+// points, 1 at 4,000 and 6,000, 1 at 8,000). Objects farther apart than two vertices, or
+// than about three point spacings (`among_points`), stay apart (test_reconstruction's two
+// spheres, the nested spheres). Each join flips the bridge of least |value| (its vertices
+// nearest the points) and is kept only if 2 chi of the surface falls by exactly 4: one
+// component fewer, no handle more. The box boundary stays outside, so that the surface stays closed. Returns
 // the number of joins; `tiny`: the value of a flipped vertex whose value was 0. Joining
 // already after the annealing, before the island removal (clusters of 5 vertices or more),
 // to keep a sparse ear that the removal takes as a speck (non-uniform bunny, seed 199, 12
 // vertices): the bar met on 56 of 80 non-uniform samplings (seeds 21-100) against 67; the
 // annealing's other specks of that size, joined, left bumps and a handle.
-template <class Leaves>
+// `among_points(v)`: whether vertex v may be a bridge. Two vertices are two point spacings
+// only where the leaves are small; between objects apart by far more than their point
+// spacing the leaves are large, and two vertices spanned the gap (two spheres of radius 1
+// 0.5 apart, 10k points each, were joined by a bar): a bridge must lie among the points.
+template <class Leaves, class Among_points>
 std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary, std::vector<signed char>& signs,
-                         std::vector<double>& values, double tiny)
+                         std::vector<double>& values, double tiny, const Among_points& among_points)
 {
   typedef typename Leaves::Cell_index Cell_index;
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   const std::size_t n = signs.size();
   std::size_t joined = 0;
+  std::vector<signed char> may_bridge(n, -1);  // among_points(v), asked once
+  const auto bridge_allowed = [&](std::size_t v) {
+    if(may_bridge[v] < 0) may_bridge[v] = among_points(v) ? 1 : 0;
+    return may_bridge[v] != 0;
+  };
   for(;;)
   {
     std::vector<std::uint32_t> root, size;
@@ -62,7 +71,7 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
       }
     if(number_of_clusters < 2) return joined;
 
-    // per outside vertex, up to two inside clusters it shares a leaf with
+    // per outside vertex that may be a bridge, up to two inside clusters it shares a leaf with
     std::vector<std::array<std::uint32_t, 2> > near(n, {{ none, none }});
     for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
     {
@@ -70,7 +79,7 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
       for(int i = 0; i < 4; ++i)
         if(signs[v[i]] > 0 && !boundary[v[i]])
           for(int j = 0; j < 4; ++j)
-            if(signs[v[j]] < 0)
+            if(signs[v[j]] < 0 && bridge_allowed(std::size_t(v[i])))
             {
               const std::uint32_t r = root[v[j]];
               std::array<std::uint32_t, 2>& a = near[v[i]];

@@ -76,8 +76,8 @@ struct Settings
   /*! last, the vertices of the surface's leaves away from the points are re-signed by the winding number of the
       points, their normals oriented by F, where it is clearly inside or outside; false: never (the paper) */
   bool winding_number_signs = true;
-  /*! last, an inside cluster but the largest is joined to another across one or two outside vertices where
-      this adds no handle (a part cut off at a neck too thin for the leaves); false: never (the paper) */
+  /*! last, an inside cluster but the largest is joined to another across one or two outside vertices among the
+      points where this adds no handle (a part cut off at a neck too thin for the leaves); false: never (the paper) */
   bool join_islands = true;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
