@@ -12,6 +12,8 @@
 // Exit codes: 0 success; 1 bad input (missing, empty, unreadable or malformed file, points
 // that cannot bound a volume, no inside found) or an output that cannot be written;
 // 2 usage error (unknown option, missing or malformed value, parameter out of range).
+// A summary that cannot be written to stdout also exits 1. Warnings (a file holding more
+// records than its header announces, far outliers) go to stderr, also with --quiet.
 // Outputs are written to temporary files beside them and renamed at the end, so a failed
 // or interrupted run leaves no (half-written) output file.
 
@@ -51,6 +53,7 @@
 #include <utility>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -108,14 +111,24 @@ extern "C" void on_signal(int sig)
 }
 
 // `dir/name.ext` -> `dir/.name.tmp<pid>.ext` (same directory, so that rename is atomic;
-// same extension, so that the writers choose the same format)
+// same extension, so that the writers choose the same format). `name` is cut so that the
+// temporary's name stays within the 255 bytes a file name may have: a legal output name of
+// 250 bytes failed ("File name too long").
 std::string temporary_name(const std::string& path, const std::string& ext)
 {
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = (slash == std::string::npos) ? "" : path.substr(0, slash + 1);
   std::string name = (slash == std::string::npos) ? path : path.substr(slash + 1);
   name = name.substr(0, name.size() - ext.size() - 1);
-  return dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + ext;
+  const std::string tail = ".tmp" + std::to_string(::getpid()) + "." + ext;
+  const std::size_t room = 255 - 1 - tail.size();  // 1 for the leading '.'
+  if(name.size() > room)
+  {
+    std::size_t size = room;
+    while(size > 0 && (static_cast<unsigned char>(name[size]) & 0xC0) == 0x80) --size;  // not inside a UTF-8 character
+    name.resize(size);
+  }
+  return dir + "." + name + tail;
 }
 
 void register_temporary(const std::string& path)
@@ -126,10 +139,25 @@ void register_temporary(const std::string& path)
   g_number_of_temporaries = g_number_of_temporaries + 1;
 }
 
+// An output that cannot be renamed into place (a directory of that name, a name too long)
+// is reported before the reconstruction runs rather than after. lstat, as rename replaces
+// a symbolic link rather than what it points to.
+void check_output_name(const std::string& final_name)
+{
+  struct stat st;
+  if(::lstat(final_name.c_str(), &st) == 0)
+  {
+    if(S_ISDIR(st.st_mode)) input_error("cannot write '" + final_name + "': it is a directory");
+  }
+  else if(errno != ENOENT)
+    input_error("cannot write '" + final_name + "': " + std::strerror(errno));
+}
+
 // Creates (empty) the temporary file, so that an unwritable directory is reported before
 // the reconstruction runs rather than after.
 void create_temporary(const std::string& temporary, const std::string& final_name)
 {
+  check_output_name(final_name);
   register_temporary(temporary);
   std::ofstream os(temporary);
   if(!os)
@@ -191,6 +219,15 @@ void rename_into_place(const std::string& temporary, const std::string& final_na
     input_error("cannot write '" + final_name + "': " + std::strerror(errno));
 }
 
+// Output lost on a full disk or a closed stdout must not pass for success (`> /dev/full`
+// exited 0).
+void write_stdout(const std::string& text, const std::string& what, const std::string& note = "")
+{
+  errno = 0;
+  if(!(std::cout << text << std::flush))
+    input_error("cannot write " + what + " to stdout" + (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()) + note);
+}
+
 // ---------------------------------------------------------------------------------------
 // Options: one table drives parsing, --help (defaults read from Settings) and the names
 // in range errors, so that none of them can drift from the library.
@@ -236,7 +273,9 @@ double parse_real(const std::string& flag, const std::string& value)
   errno = 0;
   const double v = std::strtod(s, &end);
   if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not a number");
-  if(!std::isfinite(v) || errno == ERANGE) usage_error(flag + ": '" + value + "' is out of range");
+  // ERANGE on underflow comes with a tiny value (1e-308) or 0, which Settings::check() judges
+  // like any other; on overflow with HUGE_VAL
+  if(!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1)) usage_error(flag + ": '" + value + "' is out of range");
   return v;
 }
 
@@ -588,7 +627,9 @@ int run(int argc, char** argv)
   const Command_line cl = parse_command_line(argc, argv);
   if(cl.help)
   {
-    print_help(std::cout);
+    std::ostringstream help;
+    print_help(help);
+    write_stdout(help.str(), "the help");
     return SUCCESS;
   }
 
@@ -608,7 +649,9 @@ int run(int argc, char** argv)
 
   CGAL::Real_timer timer;
   timer.start();
-  std::vector<Point> points = ism_tool::read_point_file<Point>(cl.input);
+  std::vector<std::string> warnings;
+  std::vector<Point> points = ism_tool::read_point_file<Point>(cl.input, warnings);
+  for(const std::string& w : warnings) std::cerr << "ism_reconstruct: warning: " << w << "\n";
   const double read_time = timer.time();
   // points far from unit size are reconstructed scaled by 2^e, exactly, and the outputs
   // scaled back (normalization.h: some sizes are held in single precision)
@@ -644,7 +687,24 @@ int run(int argc, char** argv)
   }
   catch(const std::runtime_error& e)
   {
-    input_error("'" + cl.input + "': " + e.what());
+    std::string message = std::string("'") + cl.input + "': " + e.what();
+    // the library blames the points; a refinement parameter set away from its default can
+    // as well stop the cells before one has a vertex inside (--coplanarity-threshold 0.333
+    // on 5,000 sphere points that are fine by default)
+    if(message.find("no vertex was found inside") != std::string::npos)
+    {
+      const Settings defaults;
+      std::string given;
+      for(const Option& o : options())
+        if(std::strcmp(o.field, "maximum_depth") == 0 || std::strcmp(o.field, "min_points_per_cell") == 0 ||
+           std::strcmp(o.field, "coplanarity_threshold") == 0)
+          if(o.show(cl.settings) != o.show(defaults))
+            given += std::string(given.empty() ? "" : ", ") + o.flag + " " + o.show(cl.settings);
+      if(!given.empty())
+        message += "; the refinement parameters set away from their defaults (" + given +
+                   ") may also stop the refinement too early: try without them (--help lists the defaults)";
+    }
+    input_error(message);
   }
   catch(const std::length_error& e)  // the memory guard
   {
@@ -734,7 +794,7 @@ int run(int argc, char** argv)
      << "euler:       " << topo.euler << "\n"
      << "closed:      " << yes(topo.closed) << "\n"
      << "manifold:    " << yes(topo.manifold) << "\n";
-  std::cout << os.str() << std::flush;
+  write_stdout(os.str(), "the summary", " (the output files are written)");
   return SUCCESS;
 }
 

@@ -4,7 +4,8 @@
 // first; .xyz and .off points are collected by the scan itself.
 //
 // Errors are thrown as ism_tool::Input_error (a std::runtime_error) whose message is ready to
-// print.
+// print; warnings (the file is read, but something in it looks wrong) are returned, ready to
+// print too.
 
 #ifndef ISM_TOOL_READ_POINT_FILE_H
 #define ISM_TOOL_READ_POINT_FILE_H
@@ -90,6 +91,17 @@ inline std::string printable(const std::string& s, std::size_t n)
 
 inline std::string where(const std::string& file, std::size_t line) { return "'" + file + "', line " + std::to_string(line); }
 
+// Skips a UTF-8 byte-order mark: Windows editors write one at the start of text files, and
+// it says nothing of the format.
+inline bool skip_byte_order_mark(std::istream& is)
+{
+  char b[3];
+  if(is.read(b, 3) && std::memcmp(b, "\xEF\xBB\xBF", 3) == 0) return true;
+  is.clear();
+  is.seekg(0);
+  return false;
+}
+
 // The whitespace-separated tokens of a text stream across its lines (OFF, and PLY's ASCII
 // records); with `comments`, '#' starts a comment to the end of the line (OFF).
 class Token_reader
@@ -137,7 +149,8 @@ private:
 };
 
 // `x y z [nx ny nz ...]` per line, '#' comments, an optional point count on the first line
-// (the format of CGAL::IO::read_XYZ).
+// (the format of CGAL::IO::read_XYZ); the numbers after x y z are ignored, whatever their
+// number (scanners export `x y z intensity`).
 // Checks an .xyz/.pwn file line by line (clear messages with line numbers) and, as it
 // parses every number anyway, collects the points: a second pass by CGAL's reader cost as
 // much again (0.75 s for 437k points in all before, 0.2 s after).
@@ -189,8 +202,6 @@ void scan_xyz(const std::string& file, std::istream& is, std::vector<Point>& out
     for(int d = 0; d < 3; ++d)
       if(!std::isfinite(values[d]))
         input_error(where(file, number) + ": the point has a NaN or infinite coordinate");
-    if(values.size() > 3 && values.size() < 6)
-      input_error(where(file, number) + ": incomplete normal (expected 3 or at least 6 numbers)");
     out.emplace_back(values[0], values[1], values[2]);
   }
   if(is.bad()) input_error("'" + file + "': read error");
@@ -216,14 +227,16 @@ inline bool read_big_endian(std::istream& is, std::uint32_t& w)
 // truncated"). A vertex's values after its coordinates (normal, colour, texture
 // coordinates) are ignored; faces are checked (a truncated file is refused) but not kept.
 template <class Point>
-void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out)
+void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out, std::vector<std::string>& warnings)
 {
   Token_reader in(is, 0, true);
   auto count = [&](const std::string& t, const char* what, double max) {
     double v;
     if(t.empty()) input_error(where(file, in.line()) + ": the file ends before the " + what);
-    if(!parse_token(t, v) || v < 0 || v != std::floor(v) || v > max)
+    if(!parse_token(t, v) || v < 0 || v != std::floor(v))
       input_error(where(file, in.line()) + ": expected the " + what + ", read '" + printable(t, 40) + "'");
+    if(v > max)
+      input_error(where(file, in.line()) + ": '" + printable(t, 40) + "' is too large for the " + what + " (corrupt?)");
     return (unsigned long long)v;
   };
 
@@ -269,7 +282,8 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
   }
   else
   {
-    vertices = count(t, "vertex and face counts", 4e9);
+    // a vertex count the file cannot hold is refused just below, with the file's size
+    vertices = count(t, "vertex and face counts", 1e18);
     faces = count(in.next(), "vertex and face counts", 4e9);
     in.rest_of_line();  // the edge count, ignored as CGAL does
     // at least "0 0 0\n" per vertex (the last without its newline): a count beyond the
@@ -329,6 +343,17 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
     out.emplace_back(x[0], x[1], x[2]);
   }
 
+  // more vertex lines than the header announces (a count not updated after an edit) would be
+  // dropped silently: the header decides, as in the format, but the user is told
+  if(!binary && faces == 0)
+  {
+    double v;
+    t = in.next();
+    if(!t.empty() && parse_token(t, v))
+      warnings.push_back(where(file, in.line()) + ": more vertex lines than the " + std::to_string(vertices) +
+                         " the header announces (and no face); only the first " + std::to_string(vertices) + " are read");
+  }
+
   for(unsigned long long f = 0; f < faces; ++f)
   {
     auto ends = [&]() { return "the file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces (truncated?)"; };
@@ -355,7 +380,9 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
     double k;
     if(!parse_token(t, k) || k < 1 || k != std::floor(k))
       input_error(where(file, in.line()) + ": face " + std::to_string(f) + ": expected a vertex count, read '" +
-                  printable(t, 40) + "'");
+                  printable(t, 40) + "'" +
+                  // a coordinate where the first face should be: the vertex count is too small
+                  (f == 0 && parse_token(t, k) ? " (more vertices than the " + std::to_string(vertices) + " the header announces?)" : ""));
     const std::vector<std::string> record = in.rest_of_line();
     if(record.size() < std::size_t(k))
       input_error(where(file, in.line()) + ": face " + std::to_string(f) + " lists fewer than " +
@@ -375,7 +402,7 @@ void scan_off(const std::string& file, std::istream& is, std::vector<Point>& out
 // before any element, silently drops a property of unknown type (misreading the rest), and
 // allocates whatever a list count says (a 117-byte file with a count of 4e9 took 3.9 GB
 // and 56 s before failing): each is refused here with its line.
-inline void scan_ply(const std::string& file, std::istream& is)
+inline void scan_ply(const std::string& file, std::istream& is, std::vector<std::string>& warnings)
 {
   struct Property
   {
@@ -427,8 +454,11 @@ inline void scan_ply(const std::string& file, std::istream& is)
     else if(t[0] == "element")
     {
       double count;
-      if(t.size() != 3 || !parse_token(t[2], count) || count < 0 || count != std::floor(count) || count > 1e15)
+      if(t.size() != 3 || !parse_token(t[2], count) || count < 0 || count != std::floor(count))
         input_error(where(file, number) + ": expected 'element NAME COUNT', read '" + printable(line, 60) + "'");
+      if(count > 1e15)
+        input_error(where(file, number) + ": the element '" + printable(t[1], 20) + "' announces " + printable(t[2], 30) +
+                    " records, more than any file holds (corrupt?)");
       elements.push_back(Element{t[1], (unsigned long long)count, {}});
     }
     else if(t[0] == "property")
@@ -478,23 +508,43 @@ inline void scan_ply(const std::string& file, std::istream& is)
     std::string t;
     double v;
     for(const Element& e : elements)
+    {
+      auto ends = [&](unsigned long long r) {
+        input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + " of " + std::to_string(e.count) + ")");
+      };
       for(unsigned long long r = 0; r < e.count; ++r)
         for(const Property& p : e.properties)
         {
           unsigned long long items = 1;
           if(p.count_size)
           {
-            if(!token(t)) input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + ")");
+            if(!token(t)) ends(r);
             if(!parse_token(t, v) || v < 0 || v != std::floor(v))
               input_error(where(file, in.line()) + ": '" + printable(t, 40) + "' is not a list count");
             items = (unsigned long long)v;
           }
           for(unsigned long long i = 0; i < items; ++i)
           {
-            if(!token(t)) input_error(truncated + printable(e.name, 20) + "' (record " + std::to_string(r) + ")");
+            if(!token(t)) ends(r);
             if(!parse_token(t, v)) input_error(where(file, in.line()) + ": '" + printable(t, 40) + "' is not a number");
+            // CGAL's reader fails on them without saying where
+            if(!std::isfinite(v))
+            {
+              if(e.name == "vertex" && (p.name == "x" || p.name == "y" || p.name == "z"))
+                input_error(where(file, in.line()) + ": vertex " + std::to_string(r) + " has a NaN or infinite coordinate");
+              input_error(where(file, in.line()) + ": the property '" + printable(p.name, 20) + "' of the element '" +
+                          printable(e.name, 20) + "' (record " + std::to_string(r) +
+                          ") is NaN or infinite, which CGAL's PLY reader cannot read");
+            }
           }
         }
+    }
+    // more records than the header announces (a count not updated after an edit) would be
+    // dropped silently: the header decides, as in the format, but the user is told
+    if(token(t))
+      warnings.push_back(where(file, in.line()) + ": more data than the header announces (after the " +
+                         std::to_string(elements.back().count) + " records of the element '" +
+                         printable(elements.back().name, 20) + "'); it is ignored");
     return;
   }
   const std::streamoff data = is.tellg();
@@ -548,9 +598,9 @@ inline void scan_ply(const std::string& file, std::istream& is)
 
 // The points of `file`; throws Input_error with a message naming the file (and the line
 // where it can) if the file cannot be read, is empty, malformed or truncated, holds no
-// point or a NaN or infinite coordinate.
+// point or a NaN or infinite coordinate. `warnings` receives what is read but looks wrong.
 template <class Point>
-std::vector<Point> read_point_file(const std::string& file)
+std::vector<Point> read_point_file(const std::string& file, std::vector<std::string>& warnings)
 {
   using namespace internal;
   struct stat st;
@@ -564,6 +614,7 @@ std::vector<Point> read_point_file(const std::string& file)
   std::ifstream probe(file, std::ios::binary);
   if(!probe) input_error("cannot open '" + file + "': " + std::strerror(errno));
   if(probe.peek() == std::ifstream::traits_type::eof()) input_error("'" + file + "' is empty");
+  const bool byte_order_mark = skip_byte_order_mark(probe);
 
   const std::string ext = lowercase_extension(file);
   std::vector<Point> points;
@@ -574,10 +625,10 @@ std::vector<Point> read_point_file(const std::string& file)
   }
   else if(ext == "off")
   {
-    scan_off(file, probe, points);
+    scan_off(file, probe, points, warnings);
     return points;
   }
-  else if(ext == "ply") scan_ply(file, probe);
+  else if(ext == "ply") scan_ply(file, probe, warnings);
 #ifdef CGAL_LINKED_WITH_LASLIB
   else if(ext == "las") {}
 #else
@@ -587,17 +638,29 @@ std::vector<Point> read_point_file(const std::string& file)
   else
     input_error("cannot read '" + file + "': " + (ext.empty() ? std::string("no extension to tell its format") : "unknown format '." + ext + "'") +
                 " (use .xyz, .pwn, .ply or .off)");
-  probe.close();
 
   bool ok;
   {
     // CGAL's readers print their own diagnostics on std::cerr; ours are clearer
     std::ostringstream silenced;
     std::streambuf* old = std::cerr.rdbuf(silenced.rdbuf());
-    try { ok = CGAL::IO::read_points(file, std::back_inserter(points)); }
+    try
+    {
+      if(ext == "ply")
+      {
+        // from past a byte-order mark, which CGAL's reader (given the name) would not skip
+        probe.clear();
+        probe.seekg(byte_order_mark ? 3 : 0);
+        CGAL::IO::set_mode(probe, CGAL::IO::BINARY);
+        ok = CGAL::IO::read_PLY(probe, std::back_inserter(points));
+      }
+      else
+        ok = CGAL::IO::read_points(file, std::back_inserter(points));
+    }
     catch(...) { ok = false; }
     std::cerr.rdbuf(old);
   }
+  probe.close();
   if(!ok) input_error("cannot read points from '" + file + "': the file is malformed or truncated");
   if(points.empty()) input_error("'" + file + "' holds no point");
   for(std::size_t i = 0; i < points.size(); ++i)

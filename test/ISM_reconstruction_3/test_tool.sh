@@ -8,6 +8,9 @@
 #   closed, manifold;
 # - missing, empty, garbage, NaN/inf-holding, truncated and degenerate inputs exit 1 with
 #   a message naming the file (and the line for text formats), leaving no output file;
+# - a byte-order mark, extra columns, more records than a header announces (a warning) and a
+#   long output name are accepted;
+# - an output that is a directory, or a stdout that cannot be written, exits 1;
 # - unknown options, missing or malformed values and out-of-range parameters exit 2;
 # - --help exits 0 and lists every option with its default.
 set -u
@@ -88,7 +91,11 @@ run stl 0 --distance=nearest --smoothing-iterations 0 sphere.xyz sphere.stl && {
   pass ".stl output ($triangles triangles)"
 }
 # a mesh file's vertices are points: reconstruct from the .off written above
-run off_input 0 sphere.off sphere_again.off && { summary_has off_input closed yes; pass ".off input"; }
+run off_input 0 sphere.off sphere_again.off && {
+  summary_has off_input closed yes
+  [ -s off_input.err ] && fail "off_input: a mesh with faces gave a message: $(head -c 200 off_input.err)"
+  pass ".off input"
+}
 run ply_input 0 sphere.ply sphere_again2.off && { summary_has ply_input closed yes; pass "binary .ply input"; }
 # OFF variants CGAL 5.5's reader refuses ("malformed or truncated"): the tool reads their
 # points itself; exact coordinates give the .xyz run's surface, binary floats a closed one
@@ -124,6 +131,50 @@ for scale in 1e200 1e-200; do
     pass "points scaled by $scale: the surface of unit size $got"
   }
 done
+# harmless in a file, and once refused: a UTF-8 byte-order mark (Windows editors) in every
+# text format, `x y z intensity` (scanners) and 5 columns; the same points, the same surface
+{ printf '\xef\xbb\xbf'; cat sphere.xyz; } >bom.xyz
+{ printf '\xef\xbb\xbf'; cat header_counts.off; } >bom.off
+{ printf '\xef\xbb\xbfply\nformat ascii 1.0\nelement vertex %d\n' "$n"
+  printf 'property double %s\n' x y z; echo end_header; cat sphere.xyz; } >bom.ply
+awk '{ print $0, 0.5 }' sphere.xyz >columns4.xyz
+awk '{ print $0, 0.5, 7 }' sphere.xyz >columns5.xyz
+want=$(grep '^output:' e2e.out | grep -o '([0-9]* vertices')
+for file in bom.xyz bom.off bom.ply columns4.xyz columns5.xyz; do
+  run "$file" 0 "$file" "$file.out.off" && {
+    got=$(grep '^output:' "$file.out" | grep -o '([0-9]* vertices')
+    [ "$got" = "$want" ] || fail "$file: $got, from the .xyz $want"
+    pass "$file: the .xyz run's $got"
+  }
+done
+# more vertex records than the header announces: the header decides (the format), with a
+# warning on stderr, also with --quiet (as the tool's other warning)
+{ echo OFF; echo "4000 0 0"; cat sphere.xyz; } >more_vertices.off
+{ printf 'ply\nformat ascii 1.0\nelement vertex 4000\n'; printf 'property double %s\n' x y z; echo end_header
+  cat sphere.xyz; } >more_vertices.ply
+for file in more_vertices.off more_vertices.ply; do
+  run "$file" 0 --quiet "$file" "$file.out.off" && {
+    grep -q "warning: '$file', line [0-9]*: more .* than the .*header announces" "$file.err" ||
+      fail "$file: no warning on stderr: $(head -c 300 "$file.err")"
+    pass "$file: $(head -1 "$file.err")"
+  }
+done
+# an underflowing value is a tiny one, for Settings::check() to judge (strtod's ERANGE
+# refused it as out of range)
+run underflow 0 --quiet --thin-handle-depth 1e-308 sphere.xyz underflow.off && pass "--thin-handle-depth 1e-308"
+# the temporary .NAME.tmpPID.EXT of a legal 254-byte name went over 255 bytes
+long=$(printf 'x%.0s' {1..250}).off
+run long_name 0 --quiet sphere.xyz "$long" && {
+  [ -s "$long" ] || fail "long_name: the 254-byte output is missing"
+  no_leftovers long_name
+  pass "a 254-byte output name"
+}
+# beyond 255 bytes it is refused before the work (the temporary's name is shortened)
+if run name_too_long 1 sphere.xyz "x$long.off"; then
+  grep -q "File name too long" name_too_long.err || fail "name_too_long: $(cat name_too_long.err)"
+  pass "name_too_long: $(head -c 60 name_too_long.err)..."
+fi
+
 # unclamped (the paper's way), a box boundary vertex could stay inside after the global
 # flip: 300 points on an open cylinder came out open with --no-clamp and with --paper
 awk 'BEGIN { for (i = 0; i < 20; ++i) for (j = 0; j < 15; ++j) { a = 6.283185307 * (i + 0.5 * (j % 2)) / 20
@@ -194,6 +245,14 @@ bad_input off_dimension_2 plane.off 2 && says off_dimension_2 "dimension 2"
 bad_input off_at_infinity infinity.off 9 && says off_at_infinity "at infinity"
 printf 'OFF\n1000000000 0 0\n0 0 0\n' >announces.off
 bad_input off_count_beyond_file announces.off 2 && says off_count_beyond_file "more than the file can hold"
+printf 'OFF\n1000000000000 0 0\n0 0 0\n' >announces_1e12.off
+bad_input off_count_1e12 announces_1e12.off 2 && says off_count_1e12 "more than the file can hold"
+printf 'OFF\n3 10000000000 0\n0 0 0\n' >faces_1e10.off
+bad_input off_face_count_1e10 faces_1e10.off 2 && says off_face_count_1e10 "too large"
+# more vertex lines than announced, and faces: the first face is not one
+{ echo OFF; echo "4000 1 0"; cat sphere.xyz; echo "3 0 1 2"; } >more_vertices_faces.off
+bad_input off_more_vertices_faces more_vertices_faces.off 4003 &&
+  says off_more_vertices_faces "more vertices than the 4000 the header announces?"
 head -c 5000 binary.off >truncated_binary.off
 bad_input off_binary_truncated truncated_binary.off && says off_binary_truncated "truncated"
 if [ -s sphere.ply ]; then  # the binary PLY written above, cut in half
@@ -214,6 +273,12 @@ printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0
 bad_input ply_property_before_element property_first.ply 3 && says ply_property_before_element "before any element"
 printf "${ply_head}property float x\nproperty float y\nproperty int64 z\nend_header\n0 0 0\n1 0 0\n0 1 0\n" >int64.ply
 bad_input ply_unknown_type int64.ply 6 && says ply_unknown_type "'int64'"
+printf 'ply\nformat ascii 1.0\nelement vertex 1e16\nproperty float x\nend_header\n' >count_1e16.ply
+bad_input ply_count_1e16 count_1e16.ply 3 && says ply_count_1e16 "more than any file holds"
+# CGAL's reader fails on NaN in ASCII without saying where: vertex k on line k + 8
+{ printf 'ply\nformat ascii 1.0\nelement vertex %d\n' "$n"; printf 'property double %s\n' x y z; echo end_header
+  awk 'NR == 4 { $2 = "nan" } { print }' sphere.xyz; } >nan_ascii.ply
+bad_input ply_ascii_nan nan_ascii.ply 11 && says ply_ascii_nan "NaN or infinite"
 printf 'ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uint float w\nproperty float x\nproperty float y\nproperty float z\nend_header\n\x00\x28\x6b\xee\x00\x00\x00\x00' >list_count.ply
 bad_input ply_list_count_4e9 list_count.ply && says ply_list_count_4e9 "4000000000 items"
 # a named pipe: the scan and CGAL's reader each open the file, and a second open waits
@@ -233,6 +298,40 @@ if run unwritable 1 sphere.xyz no_such_dir/out.off; then
   grep -q "no_such_dir/out.off" unwritable.err || fail "unwritable: the message does not name the output"
   pass "unwritable output: $(head -1 unwritable.err)"
 fi
+# an output that is a directory only failed at the final rename ("Is a directory"), after
+# the work; the check before it says "it is a directory"
+mkdir -p directory.off directory.vtu
+for args in "sphere.xyz directory.off" "sphere.xyz dir_tets.off --tets directory.vtu"; do
+  name=directory_${args##*.}
+  if run "$name" 1 $args; then
+    says "$name" "it is a directory"
+    [ -e dir_tets.off ] && fail "$name: an output file was written"
+    no_leftovers "$name"
+    pass "$name: $(head -1 "$name.err")"
+  fi
+done
+# a summary lost on a full disk exited 0
+if [ -w /dev/full ]; then
+  block_failures=$failures
+  "$tool" sphere.xyz full.off >/dev/full 2>full.err
+  code=$?
+  [ "$code" -eq 1 ] || fail "stdout_full: exit code $code, expected 1"
+  grep -q "cannot write the summary to stdout" full.err || fail "stdout_full: $(cat full.err)"
+  pass "stdout_full: $(head -1 full.err)"
+fi
+# a parameter that stops the refinement is named, not only the points blamed; with the
+# defaults (10 points) the message does not name any
+run refinement_hint 1 --coplanarity-threshold 0.333 sphere.xyz hint.off && {
+  says refinement_hint "no vertex was found inside"
+  says refinement_hint "(--coplanarity-threshold 0.333)"
+  pass "refinement_hint: ...$(grep -o '; the refinement.*' refinement_hint.err)"
+}
+head -n 10 sphere.xyz >ten.xyz
+run no_refinement_hint 1 ten.xyz hint.off && {
+  says no_refinement_hint "no vertex was found inside"
+  grep -q "refinement parameters" no_refinement_hint.err && fail "no_refinement_hint: $(cat no_refinement_hint.err)"
+  pass "no_refinement_hint: no parameter named with the defaults"
+}
 
 # ---------------------------------------------------------------------------------------
 # 3. usage errors: exit 2, the option named
@@ -258,6 +357,7 @@ usage margin_out_of_range --box-margin --box-margin=-1 sphere.xyz usage.off
 usage negative_seed --seed --seed -1 sphere.xyz usage.off
 usage huge_integer --sweeps --sweeps 99999999999999999999 sphere.xyz usage.off
 usage nan_value --smoothing-lambda --smoothing-lambda nan sphere.xyz usage.off
+usage real_overflow --thin-handle-depth --thin-handle-depth 1e400 sphere.xyz usage.off
 usage bad_distance --distance --distance far sphere.xyz usage.off
 usage switch_with_value --no-clamp --no-clamp=1 sphere.xyz usage.off
 usage switch_with_value_2 --no-tangent-planes --no-tangent-planes=0 sphere.xyz usage.off
