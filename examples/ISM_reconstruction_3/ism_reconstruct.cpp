@@ -385,7 +385,8 @@ const std::vector<Option>& options()
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times; 0: never"),
     ISM_INTEGER_OPTION("--point-smoothing-neighbors", point_smoothing_neighbors,
-                       "nearest points a point's quadric is fitted to"),
+                       "nearest points a point's quadric is fitted to; more, up to 64, where the points "
+                       "are dense for their noise"),
     ISM_REAL_OPTION("--point-smoothing-noise", point_smoothing_noise,
                     "smooth the points only if the median coplanarity error of their 12 nearest points "
                     "exceeds this; 0: always"),

@@ -128,6 +128,7 @@ public:
     std::size_t number_of_boundary_vertices_set_outside = 0;  ///< box boundary vertices left inside by the last annealing, set outside (only unclamped: `clamp_box_boundary(false)`)
     double neighborhood_coplanarity = 0;  ///< median coplanarity error of the points' 12 nearest points, the noise (`point_smoothing_noise`)
     std::size_t number_of_point_smoothing_passes = 0;  ///< jet-smoothing passes over the points (`point_smoothing_iterations`)
+    unsigned int number_of_point_smoothing_neighbors = 0;  ///< the nearest points each jet fit took: `point_smoothing_neighbors`, more where the points are dense for their noise
     int deepest_level = 0;
     /// levels added to `maximum_depth` (up to 48) because far outliers or parts far apart make
     /// the points' extent 2^(n/3) times that of their bulk (98 % of them, or their largest group)
@@ -391,10 +392,13 @@ private:
        (m_settings.point_smoothing_noise > 0 && !(m_stats.neighborhood_coplanarity > m_settings.point_smoothing_noise)))
       return;  // the tree then serves the distance stage
     m_given_points = m_points;
+    m_stats.number_of_point_smoothing_neighbors = I::smoothing_neighbors_for_noise(
+        m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors), m_points.size() / 2000,
+        I::jet_reach_over_noise);
     for(int pass = 0; pass < m_settings.point_smoothing_iterations; ++pass)
     {
       if(pass > 0) m_point_neighbors.reset(new I::Point_neighbors(m_points));
-      m_points = I::jet_smoothed(m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors));
+      m_points = I::jet_smoothed(m_points, *m_point_neighbors, m_stats.number_of_point_smoothing_neighbors);
       ++m_stats.number_of_point_smoothing_passes;
     }
     m_point_neighbors.reset();  // of the points before the last pass

@@ -794,6 +794,25 @@ void point_smoothing_test()
     for(int d = 0; d < 3; ++d) moved = std::max(moved, std::abs(on_line[i][d] - line[i][d]));
   // (up to the single-precision normal of the plane fit)
   CHECK(moved < 1e-6, "point smoothing: points on a line stay there, moved " + std::to_string(moved));
+
+  // the same noise twenty times denser: the 24 nearest points reach under 2 sigma, so the
+  // jet fits take more; on the 4,000 points (reach about 7 sigma) they stay 24
+  std::vector<Point> dense;
+  const int m = 80000;
+  for(int i = 0; i < m; ++i)
+  {
+    const double z = 1 - (2 * i + 1.) / m, r = std::sqrt(1 - z * z), phi = i * 2.399963229728653, s = 1 + gauss(rng);
+    dense.push_back({{ s * r * std::cos(phi), s * r * std::sin(phi), s * z }});
+  }
+  const internal::Point_neighbors dense_neighbors(dense);
+  const unsigned int k_sparse = internal::smoothing_neighbors_for_noise(noisy, noisy_neighbors, 24, noisy.size() / 2000,
+                                                                        internal::jet_reach_over_noise);
+  const unsigned int k_dense = internal::smoothing_neighbors_for_noise(dense, dense_neighbors, 24, dense.size() / 2000,
+                                                                       internal::jet_reach_over_noise);
+  std::cout << "  jet neighbours for 2 % noise: " << k_sparse << " at 4,000 points, " << k_dense << " at 80,000" << std::endl;
+  CHECK(k_sparse == 24 && k_dense >= 28 && k_dense <= 64,
+        "point smoothing: jet neighbours 24 at 4,000 noisy points and 28-64 at 80,000, got " + std::to_string(k_sparse) +
+            " and " + std::to_string(k_dense));
 }
 
 // n points spread evenly on the sphere of centre 0 and radius `radius` (a Fibonacci spiral)

@@ -82,7 +82,8 @@ struct Settings
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
-  /*! the nearest points a point's quadric is fitted to */
+  /*! the nearest points a point's quadric is fitted to; more, up to 64, where the points are dense for their
+      noise (so that they reach 2.7 sigma) */
   int point_smoothing_neighbors = 24;
   /*! the points are smoothed only if the median coplanarity error of their 12 nearest points exceeds this (clean
       scans: about 0.001, gaussian noise of 0.1 % of the diagonal: 0.02, 0.25 %: 0.08, 0.5 %: 0.13); 0: always */
