@@ -393,8 +393,7 @@ private:
       return;  // the tree then serves the distance stage
     m_given_points = m_points;
     m_stats.number_of_point_smoothing_neighbors = I::smoothing_neighbors_for_noise(
-        m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors), m_points.size() / 2000,
-        I::jet_reach_over_noise);
+        m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors), m_points.size() / 2000);
     for(int pass = 0; pass < m_settings.point_smoothing_iterations; ++pass)
     {
       if(pass > 0) m_point_neighbors.reset(new I::Point_neighbors(m_points));

@@ -805,10 +805,8 @@ void point_smoothing_test()
     dense.push_back({{ s * r * std::cos(phi), s * r * std::sin(phi), s * z }});
   }
   const internal::Point_neighbors dense_neighbors(dense);
-  const unsigned int k_sparse = internal::smoothing_neighbors_for_noise(noisy, noisy_neighbors, 24, noisy.size() / 2000,
-                                                                        internal::jet_reach_over_noise);
-  const unsigned int k_dense = internal::smoothing_neighbors_for_noise(dense, dense_neighbors, 24, dense.size() / 2000,
-                                                                       internal::jet_reach_over_noise);
+  const unsigned int k_sparse = internal::smoothing_neighbors_for_noise(noisy, noisy_neighbors, 24, noisy.size() / 2000);
+  const unsigned int k_dense = internal::smoothing_neighbors_for_noise(dense, dense_neighbors, 24, dense.size() / 2000);
   std::cout << "  jet neighbours for 2 % noise: " << k_sparse << " at 4,000 points, " << k_dense << " at 80,000" << std::endl;
   CHECK(k_sparse == 24 && k_dense >= 28 && k_dense <= 64,
         "point smoothing: jet neighbours 24 at 4,000 noisy points and 28-64 at 80,000, got " + std::to_string(k_sparse) +

@@ -34,8 +34,9 @@ namespace internal {
 // than about three point spacings (`among_points`), stay apart (test_reconstruction's two
 // spheres, the nested spheres). Each join flips the bridge of least |value| (its vertices
 // nearest the points) and is kept only if 2 chi of the surface falls by exactly 4: one
-// component fewer, no handle more. The box boundary stays outside, so that the surface stays closed. Returns
-// the number of joins; `tiny`: the value of a flipped vertex whose value was 0. Joining
+// component fewer, no handle more. The box boundary stays outside, so that the surface
+// stays closed. Returns the number of joins; `tiny`: the value of a flipped vertex whose
+// value was 0. Joining
 // already after the annealing, before the island removal (clusters of 5 vertices or more),
 // to keep a sparse ear that the removal takes as a speck (non-uniform bunny, seed 199, 12
 // vertices): the bar met on 56 of 80 non-uniform samplings (seeds 21-100) against 67; the

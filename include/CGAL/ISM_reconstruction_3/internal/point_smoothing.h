@@ -62,7 +62,7 @@ inline double median_neighborhood_coplanarity(const std::vector<std::array<doubl
 // over-smoothed the ears (vertices beyond 1 %: 2-19 -> 174-319). Sigma is measured as the
 // median thickness (root mean square distance to their plane) of the 4k nearest points of
 // every `stride`-th point, the reach as the median distance to the k-th nearest; k grows
-// with the square of the reach missing to `reach_over_noise` times sigma, up to 64 (the
+// with the square of the reach missing to `jet_reach_over_noise` times sigma, up to 64 (the
 // 12-neighbour coplanarity error cannot tell the densities apart: it saturates, 0.136,
 // 0.147, 0.155 at 36k, 100k, 300k points).
 // The bunny at 36k points with noise of 0.5 % of the diagonal, for which 24 neighbours were
@@ -70,8 +70,7 @@ inline double median_neighborhood_coplanarity(const std::vector<std::array<doubl
 // neighbours grow, so that the samplings the 24 were measured on keep them.
 constexpr double jet_reach_over_noise = 2.7;
 inline unsigned int smoothing_neighbors_for_noise(const std::vector<std::array<double, 3> >& points,
-                                                  const Point_neighbors& neighbors, unsigned int k, std::size_t stride,
-                                                  double reach_over_noise)
+                                                  const Point_neighbors& neighbors, unsigned int k, std::size_t stride)
 {
   stride = (std::max)(stride, std::size_t(1));
   const std::size_t n = points.empty() ? 0 : (points.size() - 1) / stride + 1;
@@ -98,9 +97,9 @@ inline unsigned int smoothing_neighbors_for_noise(const std::vector<std::array<d
     return double(v[v.size() / 2]);
   };
   const double r = median(reach), sigma = median(thickness);
-  if(!(r > 0) || !(reach_over_noise * sigma > r)) return k;
-  const double wanted = double(k) * (reach_over_noise * sigma / r) * (reach_over_noise * sigma / r);
-  return unsigned((std::min)(64., std::ceil(wanted)));
+  const double missing = jet_reach_over_noise * sigma / r;  // > 1: the reach falls short
+  if(!(r > 0) || !(missing > 1)) return k;
+  return unsigned((std::min)(64., std::ceil(double(k) * missing * missing)));
 }
 
 // The jet projection of `p`: along the normal of the PCA plane of its k nearest points,
