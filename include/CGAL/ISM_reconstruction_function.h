@@ -294,8 +294,8 @@ public:
     if(m_settings.join_islands)
     {
       m_stats.number_of_joined_islands = ISM_reconstruction_3::internal::join_islands(
-          leaves, boundary, m_sign, m_value, 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())),
-          [&](std::size_t v) { return among_points(neighbors, m_vertex_xyz[v]); });
+          leaves, m_vertex_xyz, boundary, m_sign, m_value, 1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())),
+          [&](const Xyz& x) { return among_points(neighbors, x); });
       m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     }
     m_point_neighbors.reset();

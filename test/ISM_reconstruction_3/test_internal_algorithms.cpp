@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <random>
@@ -1209,7 +1210,8 @@ double cut_ring_value(const Point& p) { return (std::max)(torus_value(p), 0.025 
 
 template <class Function>
 void join_islands_case(const Tet_mesh& m, const Function& f, const std::string& name, long euler_before,
-                       long euler_after, std::size_t joins, bool among_points = true)
+                       long euler_after, std::size_t joins,
+                       const std::function<bool(const Point&)>& among_points = [](const Point&) { return true; })
 {
   std::vector<double> values = sample(m, f);
   std::vector<signed char> signs;
@@ -1220,8 +1222,7 @@ void join_islands_case(const Tet_mesh& m, const Function& f, const std::string& 
   internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
   CHECK(check_surface(pts, tris).euler == euler_before, name << ": the input has Euler characteristic "
                                                             << check_surface(pts, tris).euler << ", not " << euler_before);
-  const std::size_t joined = internal::join_islands(Tet_mesh_leaves{m}, boundary, signs, values, 1e-9,
-                                                    [among_points](std::size_t) { return among_points; });
+  const std::size_t joined = internal::join_islands(Tet_mesh_leaves{m}, m.points, boundary, signs, values, 1e-9, among_points);
   for(std::size_t v = 0; v < values.size(); ++v)
     CHECK((values[v] < 0) == (signs[v] < 0), name << ": value and sign of vertex " << v << " disagree");
   internal::marching_tetrahedra(m.points, m.tets, values, pts, tris);
@@ -1244,8 +1245,22 @@ void join_islands_test(const Tet_mesh& grid)
                       gap <= 2 ? 2 : 4, gap <= 2 ? 1 : 0);
   }
   // the same, but no vertex between them lies among the points: two objects, not a neck
-  join_islands_case(grid, [](const Point& p) { return (std::min)(box_value(p, -0.475, -0.025), box_value(p, 0.025, 0.475)); },
-                    "two boxes 1 vertex layer apart, the bridge not among the points", 4, 4, 0, false);
+  const auto touching_boxes = [](const Point& p) {
+    return (std::min)(box_value(p, -0.475, -0.025), box_value(p, 0.025, 0.475));
+  };
+  join_islands_case(grid, touching_boxes, "two boxes 1 vertex layer apart, the bridge not among the points", 4, 4, 0,
+                    [](const Point&) { return false; });
+  // the bridge vertices among the points, the middles of their edges not (the points only at
+  // the grid's vertices): the edges cross open space, as between two objects far apart
+  const auto at_a_grid_vertex = [](const Point& p) {
+    for(int k = 0; k < 3; ++k)
+      if(std::abs(p[k] / 0.05 - std::round(p[k] / 0.05)) > 0.01) return false;
+    return true;
+  };
+  join_islands_case(grid, touching_boxes, "two boxes 1 vertex layer apart, the bridge's edges not among the points", 4,
+                    4, 0, at_a_grid_vertex);
+  join_islands_case(grid, touching_boxes, "two boxes 1 vertex layer apart, the bridge among the points", 4, 2, 1,
+                    [](const Point&) { return true; });
   join_islands_case(grid, cut_ring_value, "a ring cut in two arcs", 4, 2, 1);
   join_islands_case(grid, torus_value, "a torus (one cluster)", 0, 0, 0);
 }

@@ -28,7 +28,9 @@ static int failures = 0;
 #define CHECK(cond, what)                                                          \
   do { if(!(cond)) { ++failures; std::cerr << "FAILED: " << what << "\n"; } } while(0)
 
-static void check_case(const std::string& name, const Mesh& truth, std::size_t n)
+// `overall`: the share of all queries on the right side required (sparse samplings round
+// off more of the surface's detail than 0.5 %)
+static void check_case(const std::string& name, const Mesh& truth, std::size_t n, double overall = 0.995)
 {
   const auto samples = sample_points(truth, n, 42, 0);
   std::vector<Point_3> points;
@@ -54,7 +56,7 @@ static void check_case(const std::string& name, const Mesh& truth, std::size_t n
   CHECK(o.closed && o.manifold, name + ": output closed and 2-manifold");
   CHECK(o.components == t.components, name + ": number of components");
   CHECK(o.genus == t.genus, name + ": genus");
-  CHECK(f.overall >= 0.995 && m.overall >= 0.995, name + ": in/out >= 99.5 %");
+  CHECK(f.overall >= overall && m.overall >= overall, name + ": in/out >= " + std::to_string(100 * overall) + " %");
   CHECK(f.far == 1. && m.far == 1., name + ": in/out 100 % farther than 1 % of the diagonal");
   CHECK(d.mean <= 0.005 * diag, name + ": mean distance <= 0.5 % of the diagonal");
 }
@@ -70,6 +72,13 @@ int main(int argc, char** argv)
   // 0.5 apart, about 9 point spacings: join_islands joined them across one vertex in the
   // gap's large leaves before a bridge had to lie among the points
   check_case("two spheres 0.5 apart, 8000 points", make_two_spheres(Point_3(0, 0, 0), 1, Point_3(2.5, 0, 0), 1), 8000);
+  // five spheres 1.2 apart, 800 points each (about 7 point spacings): a bridge vertex beside
+  // one sphere reached the next across a leaf edge as long as the gap (3 components)
+  {
+    Mesh row = make_sphere(Point_3(0, 0, 0), 1);
+    for(int k = 1; k < 5; ++k) ISM_eval::internal::append(row, make_sphere(Point_3(3.2 * k, 0, 0), 1));
+    check_case("five spheres 1.2 apart, 800 points each", row, 4000, 0.985);
+  }
   check_case("nested spheres", make_nested_spheres(Point_3(0, 0, 0), 1, 0.5), 30000);
   check_case("trefoil tube", make_trefoil_tube(), 36000);
   for(const std::string file : {"bunny00.off", "knot1.off", "eight.off", "ChineseDragon-10kv.off"})

@@ -41,22 +41,30 @@ namespace internal {
 // to keep a sparse ear that the removal takes as a speck (non-uniform bunny, seed 199, 12
 // vertices): the bar met on 56 of 80 non-uniform samplings (seeds 21-100) against 67; the
 // annealing's other specks of that size, joined, left bumps and a handle.
-// `among_points(v)`: whether vertex v may be a bridge. Two vertices are two point spacings
-// only where the leaves are small; between objects apart by far more than their point
-// spacing the leaves are large, and two vertices spanned the gap (two spheres of radius 1
-// 0.5 apart, 10k points each, were joined by a bar): a bridge must lie among the points.
+// `among_points(x)`: whether the point x lies among the input points. Two vertices are two
+// point spacings only where the leaves are small; between objects apart by far more than
+// their point spacing the leaves are large, and two vertices spanned the gap (two spheres of
+// radius 1 0.5 apart, 10k points each, were joined by a bar): a bridge vertex must lie among
+// the points, and so must the middle of each edge that ties it to a cluster or to the other
+// bridge vertex (five spheres of 800 points, 1.2 apart: a bridge vertex beside one sphere
+// reached the next across a leaf edge as long as the gap, and three components came out).
 template <class Leaves, class Among_points>
-std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary, std::vector<signed char>& signs,
+std::size_t join_islands(const Leaves& leaves, const std::vector<std::array<double, 3> >& xyz,
+                         const std::vector<char>& boundary, std::vector<signed char>& signs,
                          std::vector<double>& values, double tiny, const Among_points& among_points)
 {
   typedef typename Leaves::Cell_index Cell_index;
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   const std::size_t n = signs.size();
   std::size_t joined = 0;
-  std::vector<signed char> may_bridge(n, -1);  // among_points(v), asked once
+  std::vector<signed char> may_bridge(n, -1);  // among_points(xyz[v]), asked once
   const auto bridge_allowed = [&](std::size_t v) {
-    if(may_bridge[v] < 0) may_bridge[v] = among_points(v) ? 1 : 0;
+    if(may_bridge[v] < 0) may_bridge[v] = among_points(xyz[v]) ? 1 : 0;
     return may_bridge[v] != 0;
+  };
+  const auto edge_among_points = [&](std::size_t v, std::size_t w) {
+    return among_points(std::array<double, 3>{{ (xyz[v][0] + xyz[w][0]) / 2, (xyz[v][1] + xyz[w][1]) / 2,
+                                                (xyz[v][2] + xyz[w][2]) / 2 }});
   };
   for(;;)
   {
@@ -84,8 +92,11 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
             {
               const std::uint32_t r = root[v[j]];
               std::array<std::uint32_t, 2>& a = near[v[i]];
+              // the edge is asked only for a cluster not recorded yet: once per cluster
+              // and bridge vertex, mostly
+              if(a[1] != none || a[0] == r || !edge_among_points(std::size_t(v[i]), std::size_t(v[j]))) continue;
               if(a[0] == none) a[0] = r;
-              else if(a[0] != r && a[1] == none) a[1] = r;
+              else a[1] = r;
             }
     }
     // the cheapest bridge of each cluster but the largest: one outside vertex next to it and
@@ -114,9 +125,14 @@ std::size_t join_islands(const Leaves& leaves, const std::vector<char>& boundary
         {
           const std::uint32_t a = std::uint32_t(v[i]), b = std::uint32_t(v[j]);
           if(i == j || near[a][0] == none || near[b][0] == none) continue;
+          bool asked = false, among = false;
           for(std::uint32_t s : near[a])
             for(std::uint32_t t : near[b])
-              if(s != none && t != none && s != t) offer(s, t, a, b);
+              if(s != none && t != none && s != t)
+              {
+                if(!asked) among = edge_among_points(a, b), asked = true;
+                if(among) offer(s, t, a, b);
+              }
         }
     }
     std::vector<Bridge> bridges;
