@@ -302,7 +302,8 @@ public:
            orientation(a, b, p, d) != NEGATIVE && orientation(a, b, cc, p) != NEGATIVE;
   }
 
-  /// the root (0 to 5) containing `p`, or `-1` if `p` is outside the box
+  /// the root (0 to 5) containing `p`, or `-1` if `p` is outside the box; a point outside
+  /// every root by less than 1e-9 of its size (barycentric) counts as in the nearest one
   Cell_index locate_root(const Point_3& p) const
   {
     // exact predicates cannot order a NaN: refuse it here rather than deep in a filter
@@ -311,8 +312,50 @@ public:
     for(Cell_index r = 0; r < 6; ++r)
       if(has_on(r, p))
         return r;
-    return -1;
+    return nearly_containing_root(p);
   }
+
+  /// \cond SKIP_IN_MANUAL
+  // Why: the box's edge midpoints are rounded with inexact constructions, so vertices of the
+  // triangulation on the box's boundary can lie just outside it; with an inexact kernel
+  // (Simple_cartesian<double>) the predicates round too, and a point on a face shared by two
+  // roots can test outside both. The root whose smallest barycentric coordinate of `p` is
+  // largest holds it if that coordinate is above -1e-9 (computed in doubles).
+  Cell_index nearly_containing_root(const Point_3& p) const
+  {
+    typedef std::array<double, 3> D3;
+    const auto xyz = [](const Point_3& q) { return D3{{ to_double(q.x()), to_double(q.y()), to_double(q.z()) }}; };
+    const auto volume = [](const D3& a, const D3& b, const D3& c, const D3& d) {
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] },
+                   w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
+      return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    };
+    const D3 x = xyz(p);
+    Cell_index best = -1;
+    double best_coordinate = -1e-9;
+    for(Cell_index r = 0; r < 6; ++r)
+    {
+      const std::array<Vertex_index, 4> v = positive_vertices(r);
+      D3 q[4];
+      for(int i = 0; i < 4; ++i) q[i] = xyz(m_points[v[i]]);
+      const double whole = volume(q[0], q[1], q[2], q[3]);
+      if(!(whole > 0)) continue;
+      double smallest = HUGE_VAL;
+      for(int i = 0; i < 4; ++i)
+      {
+        D3 with_p[4] = { q[0], q[1], q[2], q[3] };
+        with_p[i] = x;
+        smallest = (std::min)(smallest, volume(with_p[0], with_p[1], with_p[2], with_p[3]) / whole);
+      }
+      if(smallest >= best_coordinate)
+      {
+        best_coordinate = smallest;
+        best = r;
+      }
+    }
+    return best;
+  }
+  /// \endcond
 
   /// the leaf containing `p`, found by descending the cell tree from its root in O(level).
   /// \throws std::out_of_range if `p` is outside the box

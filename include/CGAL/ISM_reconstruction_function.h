@@ -316,6 +316,9 @@ public:
     const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
     // no function yet, or its computation was cancelled or threw: outside everywhere
     if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    // a NaN is nowhere, so outside: the distance below would be NaN
+    if(std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2]))
+      return FT(2 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
     const Cell_index r = m_tr->locate_root(p);
     if(r < 0)
     {

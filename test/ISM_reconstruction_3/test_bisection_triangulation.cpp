@@ -20,6 +20,7 @@
 #include <tetgen.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <iostream>
 #include <map>
 #include <set>
@@ -353,6 +354,42 @@ static double min_dihedral_angle(const std::array<std::array<double, 3>, 4>& p)
   return best;
 }
 
+// A box turned by angles whose sines are not dyadic (the reconstruction's boxes follow the
+// points' principal axes): the midpoints of its edges are rounded, so vertices on its
+// boundary lie off it by an ulp; with an inexact kernel the predicates round too, and a
+// point on a face shared by two roots (the main diagonal) tested outside both (an API
+// black-box run: 117 vertices of Simple_cartesian<double>'s triangulation not located).
+// Every vertex and every point of the main diagonal is located all the same.
+template <class K>
+void test_location_in_turned_box(const std::string& name)
+{
+  typedef typename K::Point_3 P;
+  typedef typename K::Vector_3 V;
+  const double c = std::cos(0.3), s = std::sin(0.3), c2 = std::cos(1.1), s2 = std::sin(1.1);
+  const V a(c * c2, s * c2, s2), b(-s, c, 0), d(-c * s2, -s * s2, c2);
+  CGAL::Bisection_triangulation_3<K> bt(P(-0.7, 0.3, -1.9), 2.3 * a, 1.7 * b, 1.1 * d);
+  bt.refine_uniformly(6);
+  long unlocated = 0;
+  for(int v = 0; v < int(bt.number_of_vertices()); ++v)
+  {
+    try { bt.locate(bt.point(v)); }
+    catch(const std::out_of_range&) { ++unlocated; }
+  }
+  const P o = bt.point(0), e = bt.point(7);
+  for(int i = 0; i <= 1000; ++i)
+  {
+    const double t = i / 1000.;
+    const P q(CGAL::to_double(o.x()) + t * CGAL::to_double(e.x() - o.x()),
+              CGAL::to_double(o.y()) + t * CGAL::to_double(e.y() - o.y()),
+              CGAL::to_double(o.z()) + t * CGAL::to_double(e.z() - o.z()));
+    if(bt.locate_root(q) < 0) ++unlocated;
+  }
+  CHECK(unlocated == 0, name + ": vertices and main-diagonal points of a turned box located (" +
+                            std::to_string(unlocated) + " not)");
+  CHECK(bt.locate_root(bt.point(0) + 1e-6 * (bt.point(0) - bt.point(7))) < 0,
+        name + ": a point just beyond a corner is outside");
+}
+
 int main(int argc, char** argv)
 {
   typedef CGAL::Bisection_triangulation_3<EPICK> BT;
@@ -361,6 +398,8 @@ int main(int argc, char** argv)
   test_kernel<EPICK>("EPICK");
   test_kernel<SC>("Simple_cartesian<double>");
   test_kernel<EPECK>("EPECK");
+  test_location_in_turned_box<EPICK>("EPICK");
+  test_location_in_turned_box<SC>("Simple_cartesian<double>");
 
   const EPICK::Iso_cuboid_3 cube(P(0, 0, 0), P(1, 1, 1));
   auto bnd = unit_box_boundary(0, 1);
