@@ -348,8 +348,15 @@ public:
 
   /// a sphere holding the points, inside which the function is meant to be meshed
   Sphere bounding_sphere() const { return m_bounding_sphere; }
-  /// a point where the function is negative (the deepest inside vertex)
-  const Point& get_inner_point() const { return m_inner_point; }
+  /*! a point where the function is negative (the deepest inside vertex)
+      \throws std::logic_error if `compute_implicit_function()` was not called or did not
+      complete (cancelled, or threw): there is no such point then */
+  const Point& get_inner_point() const
+  {
+    if(!m_tr || m_value.size() != m_tr->number_of_vertices())
+      throw std::logic_error("ISM_reconstruction_function: get_inner_point() needs a completed compute_implicit_function()");
+    return m_inner_point;
+  }
   /// @}
 
   /// \name Access

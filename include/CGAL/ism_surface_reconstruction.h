@@ -19,7 +19,9 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
+#include <stdexcept>
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <vector>
 
@@ -56,6 +58,10 @@ struct Extraction_statistics
          many nearest input points (6 to 64); `0`: the linear zero crossing of the function
          (the paper), see the named parameter `crossing_neighbors`
   \return the times of the marching tetrahedra and of the smoothing
+  \throws std::invalid_argument for an argument out of the range of the named parameter it
+          mirrors (`smoothing_iterations`, `smoothing_lambda`, `smoothing_mu`, `crossing_neighbors`)
+  \throws std::logic_error if `compute_implicit_function()` was not called, or did not
+          complete (cancelled by its `callback`, or threw)
 */
 template <class GeomTraits, class TriangleMesh>
 Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTraits>& function, TriangleMesh& mesh,
@@ -72,6 +78,17 @@ Extraction_statistics extract_scaled_surface(const ISM_reconstruction_function<G
 {
   typedef typename boost::property_traits<
       typename boost::property_map<TriangleMesh, vertex_point_t>::type>::value_type Mesh_point;
+  // the arguments are checked as the named parameters they mirror
+  Settings arguments;
+  arguments.smoothing_iterations = smoothing_iterations;
+  arguments.smoothing_lambda = lambda;
+  arguments.smoothing_mu = mu;
+  arguments.crossing_neighbors = crossing_neighbors;
+  arguments.check();
+  // a cancelled or failed computation leaves no values: its leaves would be read past them
+  if(function.values().size() != function.triangulation().number_of_vertices())
+    throw std::logic_error("ISM reconstruction: extract_surface() needs a function whose compute_implicit_function() "
+                           "completed (it was cancelled or failed)");
   Extraction_statistics stats;
   CGAL::Real_timer timer;
   timer.start();
@@ -295,12 +312,12 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_iterations}
       \cgalParamDescription{the number of Taubin lambda/mu iterations on the output mesh; `0`: no smoothing (the default: on the irregular triangles of marching tetrahedra, 3 iterations folded 851 edges of the bunny by more than 120 degrees, against 17 unsmoothed, without improving the distance to the truth)}
-      \cgalParamType{`unsigned int`, in [0, 10000]}
+      \cgalParamType{`unsigned int`, in [0, 10000], and such that the filter's largest gain per iteration, max over k in [0, 2] of |(1 - lambda k)(1 - mu k)|, raised to this power stays within 1.1 (Taubin's filter lifts the low frequencies slightly: with the default lambda and mu, at most 1.00085, so at most 112 iterations; 10,000 of them blew a sphere up to 126 times its radius); beyond, `std::invalid_argument` says how many are allowed}
       \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_lambda}
       \cgalParamDescription{Taubin's lambda, the smoothing factor}
-      \cgalParamType{`double`, in [-1, 1]}
+      \cgalParamType{`double`, in [-1, 1], and with `smoothing_mu` a filter whose gain |(1 - lambda k)(1 - mu k)| stays below 1.01 for k in [0, 2] (else it diverges: lambda = 1 with the default mu is refused)}
       \cgalParamDefault{`0.5`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_mu}

@@ -212,6 +212,26 @@ int main(int argc, char** argv)
     const bool completed =
         f.compute_implicit_function(CGAL::parameters::callback(std::function<bool(double)>([](double) { return false; })));
     CHECK(!completed && f(fresh.get_inner_point()) == 1 && f(probes[0]) == 1, "cancelled: +1 everywhere");
+    // ... and nothing that reads its values: extract_surface() read past them (a segfault, or
+    // the old surface's leaves with garbage), get_inner_point() gave the old point
+    auto throws_logic_error = [](auto run) {
+      try { run(); } catch(const std::logic_error&) { return true; }
+      return false;
+    };
+    CHECK(throws_logic_error([&] { Mesh m; ISM::extract_surface(f, m, 0, 0.5, -0.53); }),
+          "cancelled: extract_surface() throws std::logic_error");
+    CHECK(throws_logic_error([&] { f.get_inner_point(); }), "cancelled: get_inner_point() throws std::logic_error");
+    // extract_surface()'s arguments are checked as the named parameters they mirror; the
+    // defaults' Taubin filter, 1.00085 at its peak, inflated a sphere to 126 times its radius
+    // in 10,000 iterations
+    auto refused = [&](unsigned iterations, double lambda, double mu, unsigned neighbors) {
+      try { Mesh m; ISM::extract_surface(fresh, m, iterations, lambda, mu, neighbors); }
+      catch(const std::invalid_argument&) { return true; }
+      return false;
+    };
+    CHECK(refused(0, 0.5, -0.53, 5) && refused(0, 0.5, -0.53, 65) && refused(3, 2, -3, 12) &&
+              refused(1000, 0.5, -0.53, 12) && !refused(100, 0.5, -0.53, 12) && !refused(3, 0.5, -0.53, 0),
+          "extract_surface(): crossing neighbours outside 0 or [6, 64], a diverging or inflating Taubin filter refused");
   }
 
   // --- other kernels: the method computes in double whatever the kernel, so points of
