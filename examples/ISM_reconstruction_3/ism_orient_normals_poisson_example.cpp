@@ -45,7 +45,8 @@ int main(int argc, char** argv)
   std::cout << points.size() << " points read from " << filename << std::endl;
 
   // 1. Unoriented normals, from a local jet fit of the 18 nearest points. (Alternatively,
-  //    CGAL::parameters::estimate_normals(true) below estimates them by PCA.)
+  //    CGAL::parameters::estimate_normals(true, np) below, np the chain given there,
+  //    estimates them by PCA.)
   CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(
       points, 18, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
 

@@ -179,10 +179,12 @@ public:
     typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
     typename NP_helper::Const_point_map point_map = NP_helper::get_const_point_map(points, np);
     m_gt = parameters::choose_parameter<Geom_traits>(parameters::get_parameter(np, internal_np::geom_traits));
+    // a range need not have size() (std::forward_list, boost's filtered ranges)
+    const std::size_t count = std::size_t(std::distance(points.begin(), points.end()));
     ISM_reconstruction_3::internal::Memory_guard::check_point_copy(
         parameters::choose_parameter(parameters::get_parameter(np, ISM_reconstruction_3::internal_np::memory_limit), std::size_t(0)),
-        std::size_t(points.size()));
-    m_points.reserve(points.size());
+        count);
+    m_points.reserve(count);
     for(const auto& item : points)
     {
       const auto& p = get(point_map, item);

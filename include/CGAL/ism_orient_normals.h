@@ -157,10 +157,8 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
   if(points.begin() == points.end())
     return points.end();
 
-  if(estimate)
-    pca_estimate_normals<Parallel_if_available_tag>(
-        points, 18, parameters::point_map(point_map).normal_map(normal_map).geom_traits(Kernel()));
-
+  // the function needs no normals: computed first, so that a cancelled or failed run leaves
+  // the normals as they were, estimated ones included
   ISM_reconstruction_function<Kernel> function(points, np);
   try
   {
@@ -171,6 +169,9 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
   {
     return points.begin();
   }
+  if(estimate)
+    pca_estimate_normals<Parallel_if_available_tag>(
+        points, 18, parameters::point_map(point_map).normal_map(normal_map).geom_traits(Kernel()));
 
   // the test, point by point (read-only on the function, so in parallel)
   std::vector<Iterator> items;

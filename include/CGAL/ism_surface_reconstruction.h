@@ -379,7 +379,7 @@ bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,
     typedef typename Geom_traits::Point_3 Point;
     const auto point_map = NP_helper::get_const_point_map(points, np);
     std::vector<Point> scaled;
-    scaled.reserve(points.size());
+    scaled.reserve(std::size_t(std::distance(points.begin(), points.end())));
     for(const auto& item : points)
       scaled.push_back(ISM_reconstruction_3::internal::scaled_point(Point(get(point_map, item)), e));
     function.reset(new ISM_reconstruction_function<Geom_traits>(

@@ -184,6 +184,9 @@ void api_checks()
                      .callback([](double) { return false; }));
   CHECK_MSG(none == cancelled.begin(), "cancelled: nothing oriented");
   CHECK_MSG(cancelled == pwn, "cancelled: normals untouched");
+  // also those it was asked to estimate (they were estimated before the function was computed)
+  auto none_estimated = CGAL::ism_orient_normals(cancelled, pwn_np.callback([](double) { return false; }));
+  CHECK_MSG(none_estimated == cancelled.begin() && cancelled == pwn, "cancelled with estimate_normals(true): normals untouched");
 
   std::vector<Pwn> empty;
   CHECK_MSG(CGAL::ism_orient_normals(empty, pwn_np) == empty.end(), "empty range");

@@ -312,6 +312,12 @@ int main(int argc, char** argv)
     CGAL::ism_surface_reconstruction(point_set, named, CGAL::parameters::point_map(point_set.point_map()));
     CHECK(num_vertices(alone) == epick.xyz.size() / 3 && num_vertices(named) == epick.xyz.size() / 3,
           "Point_set_3 input gives the surface of a vector of points");
+    // a range without size() (a ConstRange need not have one)
+    std::forward_list<Point_3> listed;
+    for(auto it = samples.rbegin(); it != samples.rend(); ++it) listed.push_front(it->first);
+    Mesh from_list;
+    CGAL::ism_surface_reconstruction(listed, from_list);
+    CHECK(num_vertices(from_list) == epick.xyz.size() / 3, "a std::forward_list gives the surface of a vector of points");
   }
 
   // --- bad input: clear exceptions (the robustness test covers many more cases)
