@@ -161,7 +161,7 @@ struct Settings
       if(gain > 1.01)
         throw std::invalid_argument(filter + " makes Taubin smoothing diverge (|(1 - lambda k)(1 - mu k)| > 1.01 for some k in [0, 2])");
       if(smoothing_iterations * std::log(gain) > std::log(1.1))
-        throw std::invalid_argument(filter + " amplify low frequencies by up to " + str(gain) +
+        throw std::invalid_argument(filter + " amplifies low frequencies by up to " + str(gain) +
                                     " per iteration: smoothing_iterations = " + std::to_string(smoothing_iterations) +
                                     " would inflate the surface (at most " +
                                     std::to_string(int(std::log(1.1) / std::log(gain))) + " iterations)");
