@@ -9,6 +9,7 @@
 #define CGAL_BISECTION_TRIANGULATION_3_H
 
 #include <CGAL/number_utils.h>
+#include <CGAL/determinant.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/ISM_reconstruction_3/internal/Block_array.h>
 
@@ -326,9 +327,8 @@ public:
     typedef std::array<double, 3> D3;
     const auto xyz = [](const Point_3& q) { return D3{{ to_double(q.x()), to_double(q.y()), to_double(q.z()) }}; };
     const auto volume = [](const D3& a, const D3& b, const D3& c, const D3& d) {
-      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] },
-                   w[3] = { d[0] - a[0], d[1] - a[1], d[2] - a[2] };
-      return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+      return CGAL::determinant(b[0] - a[0], b[1] - a[1], b[2] - a[2], c[0] - a[0], c[1] - a[1], c[2] - a[2],
+                               d[0] - a[0], d[1] - a[1], d[2] - a[2]);
     };
     const D3 x = xyz(p);
     Cell_index best = -1;

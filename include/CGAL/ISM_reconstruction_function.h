@@ -317,7 +317,7 @@ public:
   {
     const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
     // no function yet, or its computation was cancelled or threw: outside everywhere
-    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    if(!is_computed()) return FT(1);
     // a NaN is nowhere, so outside: the distance below would be NaN
     if(std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2]))
       return FT(2 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
@@ -341,7 +341,7 @@ public:
   /// nearby points this way skips the descent of the cell tree.
   FT operator()(const Point& p, Cell_index& hint) const
   {
-    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    if(!is_computed()) return FT(1);
     const Cell_index c = m_tr->walk_to(p, hint);
     if(c < 0) return (*this)(p);
     hint = c;
@@ -350,12 +350,15 @@ public:
 
   /// a sphere holding the points, inside which the function is meant to be meshed
   Sphere bounding_sphere() const { return m_bounding_sphere; }
+  /// `true` once `compute_implicit_function()` completed (it was called, and neither
+  /// cancelled nor thrown): only then are there values, an inner point and a surface
+  bool is_computed() const { return m_tr && m_value.size() == m_tr->number_of_vertices(); }
   /*! a point where the function is negative (the deepest inside vertex)
       \throws std::logic_error if `compute_implicit_function()` was not called or did not
       complete (cancelled, or threw): there is no such point then */
   const Point& get_inner_point() const
   {
-    if(!m_tr || m_value.size() != m_tr->number_of_vertices())
+    if(!is_computed())
       throw std::logic_error("ISM_reconstruction_function: get_inner_point() needs a completed compute_implicit_function()");
     return m_inner_point;
   }

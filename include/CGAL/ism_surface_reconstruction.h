@@ -19,10 +19,10 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
-#include <stdexcept>
 #include <cmath>
 #include <iterator>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -86,9 +86,9 @@ Extraction_statistics extract_scaled_surface(const ISM_reconstruction_function<G
   arguments.crossing_neighbors = crossing_neighbors;
   arguments.check();
   // a cancelled or failed computation leaves no values: its leaves would be read past them
-  if(function.values().size() != function.triangulation().number_of_vertices())
+  if(!function.is_computed())
     throw std::logic_error("ISM reconstruction: extract_surface() needs a function whose compute_implicit_function() "
-                           "completed (it was cancelled or failed)");
+                           "completed (it was not called, was cancelled or failed)");
   Extraction_statistics stats;
   CGAL::Real_timer timer;
   timer.start();
