@@ -249,7 +249,7 @@ Integer parse_integer(const std::string& flag, const std::string& value)
   const char* s = value.c_str();
   char* end = nullptr;
   errno = 0;
-  if(std::is_unsigned<Integer>::value)
+  if constexpr(std::is_unsigned<Integer>::value)
   {
     if(value.find('-') != std::string::npos)
       usage_error(flag + ": '" + value + "' is out of range (it must not be negative)");
@@ -259,11 +259,14 @@ Integer parse_integer(const std::string& flag, const std::string& value)
       usage_error(flag + ": '" + value + "' is out of range");
     return Integer(v);
   }
-  const long long v = std::strtoll(s, &end, 10);
-  if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not an integer");
-  if(errno == ERANGE || v > (std::numeric_limits<Integer>::max)() || v < (std::numeric_limits<Integer>::min)())
-    usage_error(flag + ": '" + value + "' is out of range");
-  return Integer(v);
+  else
+  {
+    const long long v = std::strtoll(s, &end, 10);
+    if(end == s || *end != '\0') usage_error(flag + ": '" + value + "' is not an integer");
+    if(errno == ERANGE || v > (std::numeric_limits<Integer>::max)() || v < (std::numeric_limits<Integer>::min)())
+      usage_error(flag + ": '" + value + "' is out of range");
+    return Integer(v);
+  }
 }
 
 double parse_real(const std::string& flag, const std::string& value)
@@ -656,9 +659,9 @@ int run(int argc, char** argv)
   const double read_time = timer.time();
   // points far from unit size are reconstructed scaled by 2^e, exactly, and the outputs
   // scaled back (normalization.h: some sizes are held in single precision)
-  const int e = CGAL::ISM_reconstruction_3::internal::normalizing_exponent(points, CGAL::Identity_property_map<Point>());
-  if(e != 0)
-    for(Point& p : points) p = CGAL::ISM_reconstruction_3::internal::scaled_point(p, e);
+  const int exponent = CGAL::ISM_reconstruction_3::internal::normalizing_exponent(points, CGAL::Identity_property_map<Point>());
+  if(exponent != 0)
+    for(Point& p : points) p = CGAL::ISM_reconstruction_3::internal::scaled_point(p, exponent);
 
   Progress progress(!cl.quiet && ::isatty(STDERR_FILENO));
   Settings settings = cl.settings;
@@ -717,7 +720,7 @@ int run(int argc, char** argv)
   const CGAL::ISM_reconstruction_3::Extraction_statistics extraction =
       CGAL::ISM_reconstruction_3::internal::extract_scaled_surface(*function, mesh, settings.smoothing_iterations,
                                                                    settings.smoothing_lambda, settings.smoothing_mu,
-                                                                   settings.crossing_neighbors, -e);
+                                                                   settings.crossing_neighbors, -exponent);
 
   progress.stage("writing", 0.95);
   timer.reset();
@@ -737,15 +740,15 @@ int run(int argc, char** argv)
     fields[1].first = "distance";
     fields[1].second = function->values();
     std::vector<Point> tet_points;
-    if(e != 0)
+    if(exponent != 0)
     {
       // a squared distance scales twice
-      const int value_exponent = settings.distance_estimate == CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? -2 * e : -e;
+      const int value_exponent = settings.distance_estimate == CGAL::ISM_reconstruction_3::NEAREST_POINT_SQUARED_DISTANCE ? -2 * exponent : -exponent;
       for(double& x : fields[1].second) x = std::ldexp(x, value_exponent);
       tet_points.reserve(tr.points().size());
-      for(const Point& p : tr.points()) tet_points.push_back(CGAL::ISM_reconstruction_3::internal::scaled_point(p, -e));
+      for(const Point& p : tr.points()) tet_points.push_back(CGAL::ISM_reconstruction_3::internal::scaled_point(p, -exponent));
     }
-    if(!CGAL::IO::write_tet_mesh(tets_tmp, e == 0 ? tr.points() : tet_points, tets, fields))
+    if(!CGAL::IO::write_tet_mesh(tets_tmp, exponent == 0 ? tr.points() : tet_points, tets, fields))
       input_error("cannot write '" + cl.tets + "'");
   }
   // all written: move into place (the .sol of a .mesh first, the surface last)

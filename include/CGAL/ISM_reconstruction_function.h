@@ -841,10 +841,10 @@ private:
         return Xyz{{ double(m_voting_normals[i][0]), double(m_voting_normals[i][1]), double(m_voting_normals[i][2]) }};
       });
     // the points that vote, and their slot in the arrays below
-    std::vector<std::uint32_t> slot(m_points.size(), I::none), which;
+    std::vector<std::uint32_t> slot(m_points.size(), I::no_voter), which;
     for(const I::Voters& w : voters)
       for(std::uint32_t i : w)
-        if(i != I::none && slot[i] == I::none) slot[i] = 0;
+        if(i != I::no_voter && slot[i] == I::no_voter) slot[i] = 0;
     for(std::uint32_t i = 0; i < m_points.size(); ++i)
       if(slot[i] == 0) { slot[i] = std::uint32_t(which.size()); which.push_back(i); }
     const std::size_t n = which.size();

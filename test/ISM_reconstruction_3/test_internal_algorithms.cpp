@@ -684,7 +684,7 @@ void tangent_plane_test()
   const std::vector<char> fixed = { 0, 0, 0, 0, 1, 0 };
   const double radius = 0.05;
   const std::vector<internal::Voters> voters = internal::voters_of_vertices(vertices, fixed, neighbors, radius);
-  CHECK(voters[4][0] == internal::none, "tangent planes: a box boundary vertex has no voters");
+  CHECK(voters[4][0] == internal::no_voter, "tangent planes: a box boundary vertex has no voters");
   std::vector<signed char> signs = { 1, -1, -1, 1, 1, 1 };
   std::vector<double> values = { 0.5, -0.5, -0.5, 0.5, 0.5, 0.5 };
   const std::size_t changed = internal::sign_by_tangent_planes(

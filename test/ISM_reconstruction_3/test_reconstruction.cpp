@@ -192,21 +192,24 @@ int main(int argc, char** argv)
       const double s = 1024, unit = e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? s * s : s;
       std::vector<Point_3> scaled;
       for(const Point_3& p : pts) scaled.push_back(Point_3(s * p.x(), s * p.y(), s * p.z()));
-      CGAL::ISM_reconstruction_function<K> a(pts), b(scaled);
-      a.compute_implicit_function(CGAL::parameters::distance_estimate(e));
-      b.compute_implicit_function(CGAL::parameters::distance_estimate(e));
+      CGAL::ISM_reconstruction_function<K> unit_function(pts), scaled_function(scaled);
+      unit_function.compute_implicit_function(CGAL::parameters::distance_estimate(e));
+      scaled_function.compute_implicit_function(CGAL::parameters::distance_estimate(e));
       double worst = 0;  // relative deviation of F
       for(const Point_3& p : probes)
       {
-        const double fa = CGAL::to_double(a(p)), fb = CGAL::to_double(b(Point_3(s * p.x(), s * p.y(), s * p.z())));
+        const double fa = CGAL::to_double(unit_function(p));
+        const double fb = CGAL::to_double(scaled_function(Point_3(s * p.x(), s * p.y(), s * p.z())));
         worst = (std::max)(worst, std::abs(fb - unit * fa) / (unit * std::abs(fa)));
       }
       std::ostringstream what;  // std::to_string printed the deviations found, 1e-10, as 0.000000
       what << "distance estimate " << int(e) << ": the points times 1024 give F times "
            << (e == ISM::NEAREST_POINT_SQUARED_DISTANCE ? "1024^2" : "1024") << " (leaves "
-           << a.statistics().number_of_leaves << " and " << b.statistics().number_of_leaves << ", F off by " << worst
+           << unit_function.statistics().number_of_leaves << " and " << scaled_function.statistics().number_of_leaves
+           << ", F off by " << worst
            << " relative)";
-      CHECK(a.statistics().number_of_leaves == b.statistics().number_of_leaves && worst <= 1e-9, what.str());
+      CHECK(unit_function.statistics().number_of_leaves == scaled_function.statistics().number_of_leaves && worst <= 1e-9,
+            what.str());
     }
     // a cancelled computation leaves no half-made function behind (+1 everywhere)
     const bool completed =

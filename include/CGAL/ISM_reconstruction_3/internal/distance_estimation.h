@@ -32,11 +32,11 @@ inline std::vector<double> estimate_distances(const std::vector<std::array<doubl
                                               const std::vector<char>& near_surface = std::vector<char>(),
                                               std::size_t first = 0)
 {
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  double box_lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, box_hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for(const auto& p : points)
-    for(int d = 0; d < 3; ++d) { lo[d] = (std::min)(lo[d], p[d]); hi[d] = (std::max)(hi[d], p[d]); }
-  const double diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    for(int d = 0; d < 3; ++d) { box_lo[d] = (std::min)(box_lo[d], p[d]); box_hi[d] = (std::max)(box_hi[d], p[d]); }
+  const double diag = std::sqrt((box_hi[0] - box_lo[0]) * (box_hi[0] - box_lo[0]) + (box_hi[1] - box_lo[1]) * (box_hi[1] - box_lo[1]) +
+                                (box_hi[2] - box_lo[2]) * (box_hi[2] - box_lo[2]));
   const double tiny = 1e-9 * (diag > 0 ? diag : 1.);
   // The plane fit only matters where marching tetrahedra interpolates: at the vertices of
   // leaves with a sign change (`near_surface`, all vertices if empty); elsewhere one

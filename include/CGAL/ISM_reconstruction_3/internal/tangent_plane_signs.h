@@ -52,14 +52,14 @@ inline void estimate_point_normals(const std::vector<std::array<double, 3> >& po
 
 // The voters of each vertex v: its 6 nearest points if the nearest is closer than
 // `radius_of(v)` and the vertex is not on the box boundary (`fixed`: those stay outside so
-// that the surface stays closed), else none (all entries `none`). Only these points need an
+// that the surface stays closed), else none (all entries `no_voter`). Only these points need an
 // oriented normal: on the dragon (437k points) they are about a third of the points. A
 // tighter gate, the nearest point within 0.6 times the 12th nearest (against the webs a
 // sparse sampling leaves in a gap under two spacings wide: a wall's normals oriented the
 // wrong way vote its vertices a spacing away inside), met the robustness bar on fewer
 // samplings (seeds 21-100: non-uniform 65 against 67, 0.5 % noise 71 against 76).
 typedef std::array<std::uint32_t, 6> Voters;
-constexpr std::uint32_t none = std::uint32_t(-1);
+constexpr std::uint32_t no_voter = std::uint32_t(-1);
 
 template <class RadiusOf>
 std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >& vertices,
@@ -69,7 +69,7 @@ std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >
   std::vector<Voters> voters(vertices.size());
   for_each_index(vertices.size(), [&](std::size_t v) {
     Voters& w = voters[v];
-    w.fill(none);
+    w.fill(no_voter);
     if(fixed[v]) return;
     double nearest2 = HUGE_VAL;
     int m = 0;
@@ -78,7 +78,7 @@ std::vector<Voters> voters_of_vertices(const std::vector<std::array<double, 3> >
       nearest2 = (std::min)(nearest2, d2);
     });
     const double radius = radius_of(v);
-    if(!(nearest2 < radius * radius)) w.fill(none);
+    if(!(nearest2 < radius * radius)) w.fill(no_voter);
   });
   return voters;
 }
@@ -110,7 +110,7 @@ std::size_t sign_by_tangent_planes(const std::vector<std::array<double, 3> >& po
     double weights = 0, signed_sum = 0, distance_sum = 0;
     for(std::uint32_t i : voters[v])
     {
-      if(i == none) continue;
+      if(i == no_voter) continue;
       const std::array<double, 3>& n = normal_of(i);
       if(n[0] == 0 && n[1] == 0 && n[2] == 0) continue;
       const auto& p = points[i];
