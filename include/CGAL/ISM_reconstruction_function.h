@@ -18,6 +18,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/distance_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/topology_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/handle_removal.h>
+#include <CGAL/ISM_reconstruction_3/internal/normalization.h>
 #include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/ISM_reconstruction_3/internal/leaf_vertices.h>
@@ -1150,6 +1151,28 @@ private:
   ISM_reconstruction_3::internal::Block_array<std::array<std::uint32_t, 2> > m_range;
   ISM_reconstruction_3::internal::Block_array<ISM_reconstruction_3::internal::Plane_fit> m_fit;
 };
+
+namespace ISM_reconstruction_3 {
+namespace internal {
+
+// The function of `points` as the package's functions compute it: on the points scaled by
+// 2^e (read through a map, not copied) when they are far from unit size, else on the
+// points as they are (normalization.h; the exponent comes from normalizing_exponent()).
+template <class Geom_traits, class PointRange, class NamedParameters>
+ISM_reconstruction_function<Geom_traits> normalized_function(const PointRange& points, const NamedParameters& np, int e)
+{
+  if(e == 0)
+    return ISM_reconstruction_function<Geom_traits>(points, np);
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  const Scaled_point_map<typename NP_helper::Const_point_map> scaled(NP_helper::get_const_point_map(points, np), e);
+  return ISM_reconstruction_function<Geom_traits>(
+      points, parameters::memory_limit(
+                  parameters::choose_parameter(parameters::get_parameter(np, internal_np::memory_limit), std::size_t(0)),
+                  parameters::point_map(scaled).geom_traits(NP_helper::get_geom_traits(points, np))));
+}
+
+} // namespace internal
+} // namespace ISM_reconstruction_3
 
 } // namespace CGAL
 

@@ -91,6 +91,9 @@ estimate_normals(const K& k, const Named_function_parameters<T, Tag, Base>& np)
   the in/out function cannot be computed (no inside region is found, or the `callback`
   cancels the run), no normal is changed and `points.begin()` is returned.
 
+  Points far from unit size (a bounding box larger than 2^32 or smaller than 2^-32) are
+  taken scaled by a power of two, exactly, as by `ism_surface_reconstruction()`.
+
   The orientation is as good as the in/out function: parts and gaps thinner than about
   three point spacings are not resolved by it (see the user manual). Outliers are not
   detected (they are oriented like the other points); remove them first, e.g. with
@@ -158,8 +161,12 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
     return points.end();
 
   // the function needs no normals: computed first, so that a cancelled or failed run leaves
-  // the normals as they were, estimated ones included
-  ISM_reconstruction_function<Kernel> function(points, np);
+  // the normals as they were, estimated ones included. Points far from unit size are taken
+  // scaled by 2^e, exactly, as by ism_surface_reconstruction() (normalization.h): a normal's
+  // direction does not change.
+  const int e = ISM_reconstruction_3::internal::normalizing_exponent(points, point_map);
+  const ISM_reconstruction_3::internal::Scaled_point_map<PointMap> scaled_point_map(point_map, e);
+  ISM_reconstruction_function<Kernel> function = ISM_reconstruction_3::internal::normalized_function<Kernel>(points, np, e);
   try
   {
     if(!function.compute_implicit_function(np))
@@ -171,7 +178,7 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
   }
   if(estimate)
     pca_estimate_normals<Parallel_if_available_tag>(
-        points, 18, parameters::point_map(point_map).normal_map(normal_map).geom_traits(Kernel()));
+        points, 18, parameters::point_map(scaled_point_map).normal_map(normal_map).geom_traits(Kernel()));
 
   // the test, point by point (read-only on the function, so in parallel)
   std::vector<Iterator> items;
@@ -179,7 +186,7 @@ typename PointRange::iterator ism_orient_normals(PointRange& points,
   std::vector<std::array<double, 3> > xyz(items.size()), normals(items.size());
   std::vector<ISM_reconstruction_3::internal::Orientation_test> tests(items.size());
   auto test = [&](std::size_t i) {
-    const auto& p = get(point_map, *items[i]);
+    const auto p = get(scaled_point_map, *items[i]);
     const Vector n = get(normal_map, *items[i]);
     xyz[i] = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
     normals[i] = {{ to_double(n.x()), to_double(n.y()), to_double(n.z()) }};

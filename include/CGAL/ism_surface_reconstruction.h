@@ -21,7 +21,6 @@
 #include <array>
 #include <cmath>
 #include <iterator>
-#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -371,24 +370,11 @@ bool ism_surface_reconstruction(const PointRange& points, TriangleMesh& mesh,
   const ISM_reconstruction_3::Settings settings = ISM_reconstruction_3::settings_from_parameters(np);
   // points far from unit size are reconstructed scaled by 2^e, exactly (normalization.h)
   const int e = ISM_reconstruction_3::internal::normalizing_exponent(points, NP_helper::get_const_point_map(points, np));
-  std::unique_ptr<ISM_reconstruction_function<Geom_traits> > function;
-  if(e == 0)
-    function.reset(new ISM_reconstruction_function<Geom_traits>(points, np));
-  else
-  {
-    typedef typename Geom_traits::Point_3 Point;
-    const auto point_map = NP_helper::get_const_point_map(points, np);
-    std::vector<Point> scaled;
-    scaled.reserve(std::size_t(std::distance(points.begin(), points.end())));
-    for(const auto& item : points)
-      scaled.push_back(ISM_reconstruction_3::internal::scaled_point(Point(get(point_map, item)), e));
-    function.reset(new ISM_reconstruction_function<Geom_traits>(
-        scaled, parameters::memory_limit(settings.memory_limit,
-                                         parameters::geom_traits(NP_helper::get_geom_traits(points, np)))));
-  }
-  if(!function->compute_implicit_function_with_settings(settings))
+  ISM_reconstruction_function<Geom_traits> function =
+      ISM_reconstruction_3::internal::normalized_function<Geom_traits>(points, np, e);
+  if(!function.compute_implicit_function_with_settings(settings))
     return false;
-  ISM_reconstruction_3::internal::extract_scaled_surface(*function, mesh, settings.smoothing_iterations,
+  ISM_reconstruction_3::internal::extract_scaled_surface(function, mesh, settings.smoothing_iterations,
                                                          settings.smoothing_lambda, settings.smoothing_mu,
                                                          settings.crossing_neighbors, -e);
   return true;

@@ -166,15 +166,38 @@ void api_checks()
                           .normal_map(CGAL::Second_of_pair_property_map<Pwn>());
   auto pwn_first = CGAL::ism_orient_normals(pwn, CGAL::parameters::maximum_depth(22, pwn_np.random_seed(5)));
   CHECK_MSG(pwn_first == pwn.end(), "pairs: every normal oriented");
-  std::size_t outward = 0;
-  for(const Pwn& q : pwn)
+  // outward on the torus scaled by `scale` around z: away from the core circle of radius `scale`
+  auto outward_share = [](const std::vector<Pwn>& with_normals, double scale) {
+    std::size_t outward = 0;
+    for(const Pwn& q : with_normals)
+    {
+      const double x = q.first.x() / scale, y = q.first.y() / scale, rho = std::sqrt(x * x + y * y);
+      const Vector_3 away(x - x / rho, y - y / rho, q.first.z() / scale);
+      if(CGAL::scalar_product(q.second, away) > 0) ++outward;
+    }
+    return double(outward) / double(with_normals.size());
+  };
+  CHECK_MSG(outward_share(pwn, 1.) >= 0.999, "pairs: outward normals");
+
+  // points far from unit size, beyond the spans ISM_reconstruction_function takes (1e+-32):
+  // oriented as ism_surface_reconstruction() reconstructs them, scaled by a power of two
+  for(const double scale : { 0x1p120, 0x1p-120 })
   {
-    // outward on a torus around z: away from the core circle of radius 1
-    const double rx = q.first.x(), ry = q.first.y(), rho = std::sqrt(rx * rx + ry * ry);
-    const Vector_3 away(q.first.x() - rx / rho, q.first.y() - ry / rho, q.first.z());
-    if(CGAL::scalar_product(q.second, away) > 0) ++outward;
+    std::vector<Pwn> far;
+    for(const auto& s : samples)
+      far.push_back(Pwn(Point_3(scale * s.first.x(), scale * s.first.y(), scale * s.first.z()), Vector_3(1, 0, 0)));
+    try
+    {
+      CHECK_MSG(CGAL::ism_orient_normals(far, pwn_np) == far.end(), "torus at scale 2^+-120: every normal oriented");
+      const double share = outward_share(far, scale);
+      std::printf("torus at scale %g: %.2f %% of the normals outward\n", scale, 100 * share);
+      CHECK_MSG(share >= 0.999, "torus at scale 2^+-120: outward normals");
+    }
+    catch(const std::exception& e)
+    {
+      CHECK_MSG(false, std::string("torus at scale 2^+-120: ") + e.what());
+    }
   }
-  CHECK_MSG(double(outward) >= 0.999 * double(pwn.size()), "pairs: outward normals");
 
   // a cancelled run orients nothing and leaves the normals alone
   std::vector<Pwn> cancelled = pwn;

@@ -11,6 +11,8 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -60,6 +62,25 @@ Point scaled_point(const Point& p, int e)
 {
   return Point(std::ldexp(to_double(p.x()), e), std::ldexp(to_double(p.y()), e), std::ldexp(to_double(p.z()), e));
 }
+
+// the points of `PointMap` times 2^e: the scaled points are read through it, not copied
+template <class PointMap>
+struct Scaled_point_map
+{
+  typedef typename boost::property_traits<PointMap>::key_type key_type;
+  typedef typename boost::property_traits<PointMap>::value_type value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+
+  PointMap point_map;
+  int e;
+
+  Scaled_point_map(PointMap map, int exponent) : point_map(map), e(exponent) {}
+  friend value_type get(const Scaled_point_map& m, const key_type& key)
+  {
+    return scaled_point(value_type(get(m.point_map, key)), m.e);
+  }
+};
 
 } // namespace internal
 } // namespace ISM_reconstruction_3
