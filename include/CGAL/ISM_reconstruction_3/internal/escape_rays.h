@@ -82,11 +82,14 @@ inline bool all_rays_escape(const Point_neighbors& neighbors, const Escape_xyz& 
 
 // Turns outside the inside vertices of the crossed leaves from which all `rays` rays
 // escape (tested only where `worth_testing(v, u)`, u the unit vector away from the nearest
-// point), then those that became such vertices, until none changes (at most 10 rounds: a
-// slab is a leaf or two thick). A vertex is tested once, and only if its nearest point is
-// farther than its hit radius, `hit_radius_of(v)` (nearer, the tangent planes decide). The
-// value of a vertex turned outside is its distance to its nearest point. `fixed`: the box
-// boundary. Returns the number of vertices turned outside.
+// point), then, once, those that became such vertices: a slab is a leaf or two thick (on
+// the bunny with 0.5 % noise a second round turns 1-3 vertices, a third none), whereas
+// through a part of the surface left unsampled (a scan without its underside) each further
+// round dug deeper into the inside, up to 6 rounds, and opened handles. A vertex is tested
+// once, and only if its nearest point is farther than its hit radius, `hit_radius_of(v)`
+// (nearer, the tangent planes decide). The value of a vertex turned outside is its distance
+// to its nearest point. `fixed`: the box boundary. Returns the number of vertices turned
+// outside.
 template <class Leaves, class HitRadiusOf, class WorthTesting>
 std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escape_xyz>& vertex_xyz,
                                    const std::vector<Escape_xyz>& points, const Point_neighbors& neighbors,
@@ -97,7 +100,7 @@ std::size_t remove_escaping_inside(const Leaves& leaves, const std::vector<Escap
   const double tilt = 0.5;
   std::vector<char> tested(signs.size(), 0);
   std::size_t turned = 0;
-  for(int round = 0; round < 10; ++round)
+  for(int round = 0; round < 2; ++round)
   {
     const std::vector<std::uint32_t> candidates =
         untested_vertices_of_crossed_leaves(leaves, signs, tested, [&](std::uint32_t v) { return signs[v] < 0 && !fixed[v]; });
