@@ -384,6 +384,11 @@ const std::vector<Option>& options()
            "outside vertices (a part cut off at a neck too thin for the leaves)",
            [](Settings& s, const std::string&, const std::string&) { s.join_islands = false; },
            [](const Settings& s) { return std::string(s.join_islands ? "on" : "off"); }},
+    Option{"--keep-isolated-points", "remove_isolated_points", nullptr,
+           "do not leave out, first, the points whose 12 nearest points spread more than 20 times "
+           "farther than the median point's (stray returns far from the surface)",
+           [](Settings& s, const std::string&, const std::string&) { s.remove_isolated_points = false; },
+           [](const Settings& s) { return std::string(s.remove_isolated_points ? "on" : "off"); }},
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times; 0: never"),
@@ -777,7 +782,11 @@ int run(int argc, char** argv)
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   std::ostringstream os;
   os << std::fixed << std::setprecision(3);
-  os << "input:       " << cl.input << " (" << stats.number_of_points << " points)\n"
+  os << "input:       " << cl.input << " (" << stats.number_of_points << " points"
+     << (stats.number_of_isolated_points > 0
+             ? ", " + std::to_string(stats.number_of_isolated_points) + " isolated ones left out"
+             : std::string())
+     << ")\n"
      << "leaves:      " << stats.number_of_leaves << " (" << stats.number_of_vertices << " vertices, "
      << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level
      << (stats.added_levels > 0 ? " (" + std::to_string(stats.added_levels) + " levels added for far outliers or parts far apart)" : std::string())

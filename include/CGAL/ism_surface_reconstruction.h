@@ -279,6 +279,11 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamType{Boolean}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
+    \cgalParamNBegin{remove_isolated_points}
+      \cgalParamDescription{first, the points whose 12 nearest points spread more than 20 times farther than the median point's are left out of the whole computation (stray returns of a scanner far from the surface: samples of a surface stay below 2 where uniform, below 5 with one half ten times sparser); `false`: never (the paper). Every stage took such points for the surface: 200 points spread 1 to 2 diagonals around a scanned bunny (76k points) made a shell whose inside held the bunny's outside, and the output was their hull (13,652 of 20k queries on the wrong side, 0 with); clutter in a box 3 times the object's, 0.4 % of the points, 680 (0 with); the 36k bunny with 360 points 1 to 2 diagonals around (`robustness_outliers_far`, samplings 1-20): the robustness bar (one component, genus 0, every query farther than 1 % of the diagonal on the right side) met on 20 instead of 11; with 1 % uniform outliers in the box, of which 3 to 7 are isolated, samplings 21-100: 80 instead of 79; noisy and non-uniform samplings of the surface have no isolated point (unchanged)}
+      \cgalParamType{Boolean}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
     \cgalParamNBegin{point_smoothing_iterations}
       \cgalParamDescription{before the refinement, if the points are noisy (`point_smoothing_noise`), each point is moved along the normal of its neighbours' PCA plane onto a quadric fitted by least squares to its `point_smoothing_neighbors` nearest points (jet smoothing), this many times; `0`: never (the paper). Measured on the bunny at 36k points with gaussian noise of 0.5 % of the diagonal, 6 samplings: 14 queries farther than 1 % of the diagonal on the wrong side in all instead of 221, mean distance 0.124-0.130 % of the diagonal instead of 0.24-0.27 %, genus 1 on one sampling instead of two; clean points and noise up to about 0.2 % are left as they are (see `point_smoothing_noise`)}
       \cgalParamType{`int`, in [0, 100]}
@@ -330,7 +335,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
       \cgalParamDefault{`0`}
     \cgalParamNEnd
     \cgalParamNBegin{paper_settings}
-      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `join_islands(false)`, `point_smoothing_iterations(0)`, `crossing_neighbors(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
+      \cgalParamDescription{if `true`, every parameter not given takes the value of the paper instead of the default above (`ISM_reconstruction_3::Settings::paper()`: `min_points_per_cell(8)`, `coplanarity_threshold(1e-3)`, `warm_start_interval(1000)`, `clamp_box_boundary(false)`, `minimum_island_fraction(0)`, `thin_handle_depth(0)`, `tangent_plane_signs(false)`, `surface_refinement_passes(0)`, `escape_rays(0)`, `winding_number_signs(false)`, `join_islands(false)`, `remove_isolated_points(false)`, `point_smoothing_iterations(0)`, `crossing_neighbors(0)`, `smoothing_iterations(3)`, `distance_estimate(NEAREST_POINT_SQUARED_DISTANCE)`)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
     \cgalParamNEnd
@@ -354,7 +359,8 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
   \return `false` if the `callback` cancelled the run, `true` otherwise.
   \throws std::invalid_argument for bad input (no points, a non-finite coordinate, too few
           distinct points, all points on a plane or a line) or a parameter out of range
-  \throws std::runtime_error if no inside region was found
+  \throws std::runtime_error if no inside region was found, or far outliers make the box too
+          large for the bulk of the points to be resolved (remove them first)
   \throws std::length_error, before the allocation, if the points or the refinement would need
           more memory than the process may use (`memory_limit`)
 

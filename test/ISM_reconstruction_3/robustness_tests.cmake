@@ -13,7 +13,7 @@ set(ISM_ROBUSTNESS_TMP ${CMAKE_CURRENT_BINARY_DIR}/robustness_tmp)
 
 # One CTest test per section, and one per noise/outlier/sampling case, so that a failing
 # case shows by name in the CTest summary.
-foreach(section corpus noise_clean noise_gauss_0.25 noise_gauss_0.5 outliers_1 nonuniform nonuniform_dense
+foreach(section corpus noise_clean noise_gauss_0.25 noise_gauss_0.5 outliers_1 outliers_far nonuniform nonuniform_dense
                 determinism memory)
   add_test(NAME robustness_${section}
            COMMAND test_robustness ${ISM_DATA_DIR}/meshes ${ISM_ROBUSTNESS_TMP}/${section} ${section})

@@ -66,6 +66,7 @@ enum memory_limit_t { memory_limit };
 enum escape_rays_t { escape_rays };
 enum winding_number_signs_t { winding_number_signs };
 enum join_islands_t { join_islands };
+enum remove_isolated_points_t { remove_isolated_points };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -116,6 +117,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
 CGAL_ISM_ADD_NAMED_PARAMETER(winding_number_signs)
 CGAL_ISM_ADD_NAMED_PARAMETER(join_islands)
+CGAL_ISM_ADD_NAMED_PARAMETER(remove_isolated_points)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

@@ -80,6 +80,9 @@ struct Settings
   /*! last, an inside cluster but the largest is joined to another across one or two outside vertices among the
       points where this adds no handle (a part cut off at a neck too thin for the leaves); false: never (the paper) */
   bool join_islands = true;
+  /*! first, the points whose 12 nearest points spread more than 20 times farther than the median point's are left
+      out (stray returns far from the surface); false: never (the paper) */
+  bool remove_isolated_points = true;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
@@ -109,6 +112,7 @@ struct Settings
     s.escape_rays = 0;
     s.winding_number_signs = false;
     s.join_islands = false;
+    s.remove_isolated_points = false;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
     s.crossing_neighbors = 0;
@@ -220,6 +224,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.escape_rays = choose_parameter(get_parameter(np, inp::escape_rays), d.escape_rays);
   s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
   s.join_islands = choose_parameter(get_parameter(np, inp::join_islands), d.join_islands);
+  s.remove_isolated_points = choose_parameter(get_parameter(np, inp::remove_isolated_points), d.remove_isolated_points);
   s.point_smoothing_iterations =
       choose_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations);
   s.point_smoothing_neighbors = choose_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors);
