@@ -415,6 +415,17 @@ private:
     for(std::size_t i = 0; i < m_points.size(); ++i)
       if(!isolated[i]) m_points[kept++] = m_points[i];
     m_points.resize(kept);
+    // what is left must still bound a volume (a dense line among sparse points would not)
+    try
+    {
+      I::check_point_set(m_points);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      throw std::runtime_error(std::string(e.what()) + ", once the " +
+                               std::to_string(m_stats.number_of_isolated_points) +
+                               " isolated points are left out (remove_isolated_points(false) keeps them)");
+    }
     m_point_neighbors.reset(new I::Point_neighbors(m_points));
   }
 

@@ -897,6 +897,21 @@ std::vector<Case> corpus_cases()
     check_spheres(m, {{{ 0., 0., 0. }}}, 1, 1000, r);
     return r;
   });
+  // a dense segment among sparse points: the points bound a volume, what is left once the
+  // isolated ones are left out does not; refused, saying so
+  add("outliers", "segment_among_isolated_points", ERROR, [] {
+    std::vector<Point_3> v;
+    for(int i = 0; i < 2000; ++i) v.emplace_back(i / 2000., 0, 0);
+    Rng rng(28);
+    for(int i = 0; i < 20; ++i) v.push_back(rng.uniform_point(CGAL::Bbox_3(-5, -5, -5, 5, 5, 5)));
+    Result r = reconstruct(v);
+    if(r.kind == EXCEPTION && r.detail.find("isolated points are left out") == std::string::npos)
+    {
+      r.kind = CHECK_FAILED;
+      r.detail += " (the message does not say that isolated points were left out)";
+    }
+    return r;
+  });
   // two spheres 1e5 radii apart: not isolated points, but a box that leaves each sphere 21
   // levels short of what it needs; refused, naming the cause, rather than two blobs
   add("outliers", "two_spheres_1e5_apart", ERROR, [] {
