@@ -711,6 +711,17 @@ Result two_spheres(double distance)
   return r;
 }
 
+// A refusal must say why: an exception whose message lacks `phrase` fails the case.
+Result expect_message(Result r, const std::string& phrase, const std::string& missing)
+{
+  if(r.kind == EXCEPTION && r.detail.find(phrase) == std::string::npos)
+  {
+    r.kind = CHECK_FAILED;
+    r.detail += " (the message does not " + missing + ")";
+  }
+  return r;
+}
+
 std::vector<Case> corpus_cases()
 {
   std::vector<Case> cases;
@@ -875,13 +886,7 @@ std::vector<Case> corpus_cases()
   add("nonfinite", "far_outlier_1e10", ERROR, [] {
     std::vector<Point_3> v = base_points();
     v.emplace_back(1e10, 1e10, 1e10);
-    Result r = reconstruct(v);
-    if(r.kind == EXCEPTION && r.detail.find("remove the far outliers") == std::string::npos)
-    {
-      r.kind = CHECK_FAILED;
-      r.detail += " (the message does not name the far outlier)";
-    }
-    return r;
+    return expect_message(reconstruct(v), "remove the far outliers", "name the far outlier");
   });
 
   // ten points 1e5 radii around: isolated (isolated_points.h), left out; the box they made
@@ -904,26 +909,14 @@ std::vector<Case> corpus_cases()
     for(int i = 0; i < 2000; ++i) v.emplace_back(i / 2000., 0, 0);
     Rng rng(28);
     for(int i = 0; i < 20; ++i) v.push_back(rng.uniform_point(CGAL::Bbox_3(-5, -5, -5, 5, 5, 5)));
-    Result r = reconstruct(v);
-    if(r.kind == EXCEPTION && r.detail.find("isolated points are left out") == std::string::npos)
-    {
-      r.kind = CHECK_FAILED;
-      r.detail += " (the message does not say that isolated points were left out)";
-    }
-    return r;
+    return expect_message(reconstruct(v), "isolated points are left out", "say that isolated points were left out");
   });
   // two spheres 1e5 radii apart: not isolated points, but a box that leaves each sphere 21
   // levels short of what it needs; refused, naming the cause, rather than two blobs
   add("outliers", "two_spheres_1e5_apart", ERROR, [] {
     std::vector<Point_3> v = sphere_points(5000, 26), far = sphere_points(5000, 27, 1., Point_3(1e5, 0, 0));
     v.insert(v.end(), far.begin(), far.end());
-    Result r = reconstruct(v);
-    if(r.kind == EXCEPTION && r.detail.find("remove the far outliers") == std::string::npos)
-    {
-      r.kind = CHECK_FAILED;
-      r.detail += " (the message does not name the parts far apart)";
-    }
-    return r;
+    return expect_message(reconstruct(v), "remove the far outliers", "name the parts far apart");
   });
 
   // --- scale: the sphere must give the sphere at any scale: ism_surface_reconstruction()
