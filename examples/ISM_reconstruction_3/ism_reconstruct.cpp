@@ -34,6 +34,7 @@
 #include "read_point_file.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <cerrno>
@@ -409,6 +410,30 @@ const std::vector<Option>& options()
 #undef ISM_INTEGER_OPTION
 #undef ISM_REAL_OPTION
 
+// The library's messages name its parameters as a C++ caller writes them
+// (`remove_isolated_points(false)`, `maximum_depth`); a person at the shell needs the flags.
+std::string with_flags(std::string message)
+{
+  const auto identifier = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for(const Option& o : options())
+  {
+    // a switch only ever turns its parameter off
+    const std::string name = std::string(o.field) + (o.argument == nullptr ? "(false)" : "");
+    for(std::size_t at = message.find(name); at != std::string::npos; at = message.find(name, at))
+    {
+      const std::size_t end = at + name.size();
+      if((at > 0 && identifier(message[at - 1])) || (end < message.size() && identifier(message[end])))
+      {
+        at = end;
+        continue;
+      }
+      message.replace(at, name.size(), o.flag);
+      at += std::strlen(o.flag);
+    }
+  }
+  return message;
+}
+
 const Option* find_option(const std::string& flag)
 {
   for(const Option& o : options())
@@ -680,11 +705,11 @@ int run(int argc, char** argv)
   }
   catch(const std::invalid_argument& e)
   {
-    input_error("'" + cl.input + "': " + e.what());
+    input_error("'" + cl.input + "': " + with_flags(e.what()));
   }
   catch(const std::length_error& e)  // the memory guard
   {
-    input_error("'" + cl.input + "': " + e.what());
+    input_error("'" + cl.input + "': " + with_flags(e.what()));
   }
   try
   {
@@ -696,7 +721,7 @@ int run(int argc, char** argv)
   }
   catch(const std::runtime_error& e)
   {
-    std::string message = std::string("'") + cl.input + "': " + e.what();
+    std::string message = std::string("'") + cl.input + "': " + with_flags(e.what());
     // the library blames the points; a refinement parameter set away from its default can
     // as well stop the cells before one has a vertex inside (--coplanarity-threshold 0.333
     // on 5,000 sphere points that are fine by default)
@@ -717,7 +742,7 @@ int run(int argc, char** argv)
   }
   catch(const std::length_error& e)  // the memory guard
   {
-    input_error("'" + cl.input + "': " + e.what());
+    input_error("'" + cl.input + "': " + with_flags(e.what()));
   }
 
   progress.stage("extraction", 0.9);

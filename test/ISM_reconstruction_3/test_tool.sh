@@ -293,6 +293,18 @@ awk '{ print $1, $2, 0 }' sphere.xyz >flat.xyz
 bad_input coplanar_points flat.xyz
 cp sphere.xyz points.foo
 bad_input unknown_format points.foo
+# the library's refusals name its parameters as C++ does; the tool's message names the flags
+awk 'BEGIN { for (i = 0; i < 2000; ++i) print i / 2000, 0, 0; srand(28)
+             for (i = 0; i < 20; ++i) print 10 * rand() - 5, 10 * rand() - 5, 10 * rand() - 5 }' >segment.xyz
+bad_input segment_among_isolated_points segment.xyz && says segment_among_isolated_points "--keep-isolated-points keeps them"
+if run memory_limit_small 1 sphere.xyz memory_limit_small.off --memory-limit 100000; then
+  says memory_limit_small "raise --memory-limit"
+  [ -e memory_limit_small.off ] && fail "memory_limit_small: an output file was left behind"
+  pass "memory_limit_small: $(head -c 120 memory_limit_small.err)"
+fi
+for m in segment_among_isolated_points memory_limit_small; do
+  grep -Eq 'remove_isolated_points|memory_limit' "$m.err" && fail "$m: the message names a C++ parameter: $(cat "$m.err")"
+done
 # an output that cannot be written is refused before the work
 if run unwritable 1 sphere.xyz no_such_dir/out.off; then
   grep -q "no_such_dir/out.off" unwritable.err || fail "unwritable: the message does not name the output"

@@ -260,8 +260,8 @@ private:
                             " from fewer points, or " +
                             (m_budget.limited_by.compare(0, 27, "the parameter memory_limit ") == 0
                                  ? std::string("raise memory_limit (0: what the machine allows).")
-                                 : std::string("give the process more memory (the named parameter memory_limit, 0 by "
-                                               "default, can only lower the limit).")));
+                                 : std::string("give the process more memory (memory_limit, 0 by default, can only "
+                                               "lower the limit).")));
   }
 
   Memory_budget m_budget;
