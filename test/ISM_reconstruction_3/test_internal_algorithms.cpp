@@ -2,6 +2,7 @@
 // tetrahedra, Taubin smoothing, removal of thin handles, escape rays, winding number.
 
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
+#include <CGAL/ISM_reconstruction_3/internal/distance_estimation.h>
 #include <CGAL/ISM_reconstruction_3/internal/jet_crossing.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
 #include <CGAL/ISM_reconstruction_3/internal/taubin_smoothing.h>
@@ -814,6 +815,35 @@ void point_smoothing_test()
             " and " + std::to_string(k_dense));
 }
 
+// The local-plane distance (distance_estimation.h) over a disk of points is the plane's
+// distance; past the disk's rim it is about the distance to the disk (the plane alone gave 0
+// in the disk's plane: an ear tip's plane carried the surface out past its points).
+void disk_distance_test()
+{
+  std::vector<Point> disk;  // radius 0.5 about (1, 2, 0.3) in the plane z = 0.3, 400 points
+  for(int i = 0; i < 400; ++i)
+  {
+    const double r = 0.5 * std::sqrt((i + 0.5) / 400), phi = i * 2.399963229728653;
+    disk.push_back({{ 1 + r * std::cos(phi), 2 + r * std::sin(phi), 0.3 }});
+  }
+  const internal::Point_neighbors neighbors(disk);
+  const std::vector<Point> vertices = {{{ 1.1, 2.05, 0.35 }}, {{ 1.58, 2., 0.3 }}, {{ 1., 2.6, 0.31 }}};
+  const std::vector<double> d =
+      internal::estimate_distances(disk, neighbors, vertices, std::vector<signed char>(3, 1), CGAL::ISM_reconstruction_3::LOCAL_PLANE_DISTANCE);
+  CHECK(std::abs(d[0] - 0.05) < 1e-6, "disk distance: 0.05 over the disk, got " << d[0]);
+  // past the rim: at least 3/4 of the distance to the disk, at most that to the nearest point
+  const double to_disk[3] = { 0.05, 0.08, std::sqrt(0.1 * 0.1 + 0.01 * 0.01) };
+  for(int v = 1; v < 3; ++v)
+  {
+    double nearest = HUGE_VAL;
+    for(const Point& p : disk)
+      nearest = std::min(nearest, std::sqrt(std::pow(p[0] - vertices[v][0], 2) + std::pow(p[1] - vertices[v][1], 2) +
+                                            std::pow(p[2] - vertices[v][2], 2)));
+    CHECK(d[v] >= 0.75 * to_disk[v] && d[v] <= nearest, "disk distance: " << to_disk[v] << " from the disk past its rim (nearest point "
+                                                                             << nearest << "), got " << d[v]);
+  }
+}
+
 // n points spread evenly on the sphere of centre 0 and radius `radius` (a Fibonacci spiral)
 void add_sphere_points(std::vector<std::array<double, 3> >& points, int n, double radius)
 {
@@ -1304,6 +1334,9 @@ int main()
   thin_handle_test(grid, drilled_sphere_value, "thin hole within the local leaves' depth", 0, 2, 0.32, true);
   ring_restore_test(true);
   ring_restore_test(false);
+
+  std::cout << "Distance estimate" << std::endl;
+  disk_distance_test();
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();

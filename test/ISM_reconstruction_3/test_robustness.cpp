@@ -26,7 +26,8 @@
 //              queries farther than 1 % of the diagonal from the true surface. noise_clean is the same without noise (a
 //              reference for the others). These are not loosened when they fail. The
 //              environment variable ISM_ROBUSTNESS_SEED=s takes sampling s instead of 1 (how
-//              often the bar is met over samplings: README, "Measured").
+//              often the bar is met over samplings: README, "Measured"); ISM_ROBUSTNESS_DUMP=dir
+//              writes the points (.xyz) and the output (.off) there, to trace a miss.
 // determinism  same input, parameters and seed: byte-identical .off over two runs and over
 //              1 and 2 threads (tbb::global_control, when CGAL_LINKED_WITH_TBB).
 // memory       inputs whose refinement needs more memory than the process may use must be
@@ -1275,6 +1276,15 @@ Result bunny_quality(const std::string& which)
   Mesh m;
   const auto start = std::chrono::steady_clock::now();
   Result r = reconstruct(pts, params::default_values(), &m);
+  // ISM_ROBUSTNESS_DUMP=dir keeps the points and the output, to trace a miss with the tool
+  if(const char* dump = std::getenv("ISM_ROBUSTNESS_DUMP"))
+  {
+    const std::string base = std::string(dump) + "/" + which + "_" + std::to_string(seed);
+    std::ofstream xyz(base + ".xyz");
+    xyz << std::setprecision(17);
+    for(const Point_3& p : pts) xyz << p << "\n";
+    if(r.kind == MESH_OK) CGAL::IO::write_OFF(base + ".off", m, params::stream_precision(17));
+  }
   const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if(r.kind != MESH_OK)
   {

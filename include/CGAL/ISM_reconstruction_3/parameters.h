@@ -31,8 +31,9 @@ enum Distance_estimate
   NEAREST_POINT_SQUARED_DISTANCE,
   /// the distance to the nearest data point
   NEAREST_POINT_DISTANCE,
-  /// the distance to the plane fitted to the nearest data points (default: linear
-  /// interpolation along an edge then places the zero crossing on the fitted plane)
+  /// the distance to the plane fitted to the nearest data points, or to the rim of the patch
+  /// they span in it where the vertex lies past it (default: linear interpolation along an
+  /// edge then places the zero crossing on the fitted plane)
   LOCAL_PLANE_DISTANCE
 };
 
