@@ -208,7 +208,9 @@ public:
     called for every cell bisected, in order, so that a caller can distribute data
     (e.g. points) to the children.
     \throws std::length_error if the cell or vertex count would overflow the indices
-    \throws std::domain_error if a cell would exceed `maximum_level()`
+    \throws std::domain_error if a cell would exceed `maximum_level()`, or if a midpoint rounds
+    so that a child would be flat or inverted (cells too small for the precision of their
+    coordinates); the mesh stays conforming, as it does when `on_bisect` throws
   */
   template <class OnBisect>
   void bisect(Cell_index c, OnBisect&& on_bisect)
@@ -368,7 +370,12 @@ public:
       throw std::out_of_range("Bisection_triangulation_3::locate: the point is outside the box");
     while(!is_leaf(c))
       c = m_cells[c].first_child + child_side(c, p);
-    return c;
+    // Rounded midpoints lie off their edges by an ulp, so two children cover their parent
+    // only up to slivers that thin: a point within rounding of a face can descend into the
+    // leaf beside its own (60 of 576 edge midpoints of a box with decimal corners). The walk
+    // confirms the leaf in one step, or crosses to the right one.
+    const Cell_index w = walk_to(p, c, 8);
+    return w >= 0 ? w : c;
   }
 
   /// the leaf containing `p`, found by walking across the faces of the leaves from the leaf
@@ -382,10 +389,13 @@ public:
   }
 
   /// the leaf containing `p` by the walk of `locate(p, hint)`, or `-1` if the walk leaves the
-  /// box, takes more than `maximum_steps` steps, or `hint` is not a leaf
+  /// box, takes more than `maximum_steps` steps, `hint` is not a leaf, or `p` has a non-finite
+  /// coordinate (`locate(p, hint)` then throws as `locate(p)` does)
   Cell_index walk_to(const Point_3& p, Cell_index hint, int maximum_steps = 64) const
   {
     if(hint < 0 || hint >= Cell_index(m_cells.size()) || !is_leaf(hint)) return -1;
+    if(!std::isfinite(to_double(p.x())) || !std::isfinite(to_double(p.y())) || !std::isfinite(to_double(p.z())))
+      return -1;
     typename Geom_traits::Orientation_3 orientation = m_gt.orientation_3_object();
     Cell_index c = hint;
     for(int step = 0; step <= maximum_steps; ++step)
@@ -411,8 +421,10 @@ public:
   /// \name Adjacency of the leaf mesh
   /// @{
 
-  /// Appends to `out` the leaves around the edge `(vertex(c,i), vertex(c,j))` of leaf `c`,
-  /// `c` first, in rotational order (walking face neighbours).
+  /// Appends to `out` the leaves around the edge `(vertex(c,i), vertex(c,j))` of leaf `c`:
+  /// `c` first, then the others in rotational order (walking face neighbours). Around an
+  /// edge on the box boundary the leaves are an open fan: from `c` to one end of it, then
+  /// the leaves on `c`'s other side, from `c` to the other end.
   template <class OutputIterator>
   OutputIterator leaves_around_edge(Cell_index c, int i, int j, OutputIterator out) const
   {
@@ -535,6 +547,8 @@ private:
       if(corner & 1) p = p + a;
       if(corner & 2) p = p + b;
       if(corner & 4) p = p + c;
+      if(!std::isfinite(to_double(p.x())) || !std::isfinite(to_double(p.y())) || !std::isfinite(to_double(p.z())))
+        throw std::invalid_argument("Bisection_triangulation_3: a corner of the box overflows the double range");
       m_points.push_back(p);
     }
     if(m_gt.orientation_3_object()(m_points[0], m_points[1], m_points[2], m_points[4]) == COPLANAR)
@@ -652,6 +666,14 @@ private:
     grow(m_points, 1);
     const Vertex_index z = Vertex_index(m_points.size());
     m_points.push_back(m_gt.construct_midpoint_3_object()(m_points[a], m_points[b]));
+    if(!non_conforming && !splits_patch(a, b, z))
+    {
+      m_points.pop_back();
+      throw std::domain_error("Bisection_triangulation_3::bisect: at level " + std::to_string(level(first)) +
+                              " the midpoint of an edge rounds onto its ends (the cells are too small for the "
+                              "precision of their coordinates): refine less deeply, or place the box nearer "
+                              "to the origin");
+    }
 
     // create the children
     for(Cell_index t : m_patch)
@@ -693,8 +715,43 @@ private:
         else                n1 = child_holding(m_cells[t].neighbors[i < k ? i + 1 : i], x[k], non_conforming);
         m_cells[c1].neighbors[i] = n1;
       }
-      on_bisect(t, c0, c1);
     }
+    // once the patch is whole: a callback that throws then leaves a conforming mesh (called
+    // within the relinking, it left stale links, and the next bisection walked forever)
+    for(Cell_index t : m_patch) on_bisect(t, m_cells[t].first_child, m_cells[t].first_child + 1);
+  }
+
+  // Whether the midpoint z of the edge (a, b) of the cells of m_patch gives them children of
+  // their orientation. Rounded midpoints stay between the ends in every coordinate unless
+  // the edge spans about an ulp in one (cells too small for their offset from the origin:
+  // a unit box at 1e9 at level 72); only then are the children's orientations tested (the
+  // test would cost the reconstruction a tenth of its refinement). Flat children made
+  // flat leaves that contained every point tested and were refined without end.
+  bool splits_patch(Vertex_index a, Vertex_index b, Vertex_index z) const
+  {
+    const Point_3 &pa = m_points[a], &pb = m_points[b], &pz = m_points[z];
+    if(pz == pa || pz == pb) return false;
+    const auto strictly_between = [](const auto& x, const auto& lo, const auto& hi) {
+      return lo == hi || (lo < x && x < hi) || (hi < x && x < lo);
+    };
+    if(strictly_between(pz.x(), pa.x(), pb.x()) && strictly_between(pz.y(), pa.y(), pb.y()) &&
+       strictly_between(pz.z(), pa.z(), pb.z()))
+      return true;
+    typename Geom_traits::Orientation_3 orientation = m_gt.orientation_3_object();
+    for(Cell_index t : m_patch)
+    {
+      const std::array<Vertex_index, 4>& x = m_cells[t].vertices;
+      const Orientation parent = orientation(m_points[x[0]], m_points[x[1]], m_points[x[2]], m_points[x[3]]);
+      // each child is the parent with a or b replaced by z
+      for(Vertex_index end : { a, b })
+      {
+        const Point_3* q[4] = { &m_points[x[0]], &m_points[x[1]], &m_points[x[2]], &m_points[x[3]] };
+        for(int i = 0; i < 4; ++i)
+          if(x[i] == end) q[i] = &pz;
+        if(orientation(*q[0], *q[1], *q[2], *q[3]) != parent) return false;
+      }
+    }
+    return true;
   }
 
   // The face of t across from its neighbour n now belongs to `child`: point n at it.

@@ -597,6 +597,65 @@ int main(int argc, char** argv)
   CHECK(throws([&] { BT bt(cube); bt.refine([](int) { return true; }, BT::maximum_level() + 1); }),
         "refinement beyond the maximum level refused");
   CHECK(throws([&] { BT bt(cube); bt.refine_uniformly(2); bt.bisect(0); }), "bisecting an inner cell refused");
+  CHECK(throws([&] { BT bt(P(1e308, 0, 0), EPICK::Vector_3(1e308, 0, 0), EPICK::Vector_3(0, 1, 0), EPICK::Vector_3(0, 0, 1)); }),
+        "a box whose corner overflows refused");
+  {
+    BT bt(cube);
+    bt.refine_uniformly(3);
+    CHECK(bt.walk_to(P(nan, 0, 0), bt.leaves()[0]) < 0, "a walk towards a NaN point ends with -1");
+    CHECK(throws([&] { bt.locate(P(0.1, inf, 0), bt.leaves()[0]); }), "location of an infinite point from a hint refused");
+  }
+
+  // --- an on_bisect that throws leaves a conforming mesh, which refines on (it left stale
+  // neighbour links, and the next bisection walked around an edge forever)
+  for(int call = 1; call <= 9; ++call)
+  {
+    BT bt(cube);
+    bt.refine_uniformly(3);
+    int calls = 0;
+    CHECK(throws([&] {
+            bt.refine([](int) { return true; }, 5, [&](int, int, int) {
+              if(++calls == call) throw std::runtime_error("from on_bisect");
+            });
+          }),
+          "an exception of on_bisect reaches the caller");
+    bt.refine_uniformly(5);
+    const Conformity r = check_conformity(bt, unit_box_boundary(0, 1));
+    CHECK(r.faces_matched && r.neighbors_agree && r.positive && std::abs(r.volume - 1.) < 1e-9 &&
+              bt.number_of_leaves() == 6 * 32,
+          "conforming after on_bisect threw at call " + std::to_string(call));
+  }
+
+  // --- cells too small for their coordinates: a unit box at 1e9 refined around a point to
+  // level 96 (edges of 2^-32, the coordinates' ulp 1.2e-7) gave flat leaves that contained
+  // the point, and refinement without end; refused now, the mesh still whole
+  {
+    const double o = 1e9;
+    BT bt(EPICK::Iso_cuboid_3(P(o, o, o), P(o + 1, o + 1, o + 1)));
+    const P target(o + 0.3, o + 0.6, o + 0.7);
+    CHECK(throws([&] { bt.refine([&](int c) { return bt.has_on(c, target); }, BT::maximum_level()); }),
+          "midpoints rounding onto their edge's ends refused");
+    const Conformity r = check_conformity(bt, unit_box_boundary(o, o + 1));
+    CHECK(r.faces_matched && r.neighbors_agree && r.positive, "the box at 1e9 stays conforming with positive leaves");
+    CHECK(bt.number_of_leaves() < 50000, "the box at 1e9: refinement stopped (" + std::to_string(bt.number_of_leaves()) +
+                                             " leaves; it made 31 million)");
+  }
+
+  // --- a point within rounding of a leaf face, in a box with decimal corners: locate() gave
+  // the leaf beside its own (60 of 576 leaf-edge midpoints at level 4)
+  {
+    BT bt(EPICK::Iso_cuboid_3(P(0.1, 0.2, 0.3), P(0.3, 0.7, 1.1)));
+    bt.refine_uniformly(4);
+    int wrong = 0, tested = 0;
+    for(int c : bt.leaves())
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j, ++tested)
+          if(!bt.has_on(bt.locate(CGAL::midpoint(bt.point(bt.vertex(c, i)), bt.point(bt.vertex(c, j)))),
+                        CGAL::midpoint(bt.point(bt.vertex(c, i)), bt.point(bt.vertex(c, j)))))
+            ++wrong;
+    CHECK(wrong == 0, "leaf-edge midpoints of a decimal box located in a leaf holding them (" + std::to_string(wrong) +
+                          " of " + std::to_string(tested) + " not)");
+  }
 
   if(failures == 0) std::cout << "all Bisection_triangulation_3 tests passed\n";
   return failures == 0 ? 0 : 1;
