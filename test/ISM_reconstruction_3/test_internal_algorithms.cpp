@@ -661,7 +661,9 @@ void taubin_test(const Tet_mesh& m)
 // with the points of one patch left without a normal. Vertices on the z axis: the one
 // between the faces must go inside, those beyond the faces outside, one past the plate's
 // rim (beside the tangent planes) and one of the box boundary must keep their sign, and a
-// vertex whose only voters have no normal must keep its sign.
+// vertex whose only voters have no normal must keep its sign. Then with orientations that
+// vouch for 0.01 only: the vertex between the faces (0.02 deep) still goes inside, a vertex
+// 0.03 behind one face with nothing behind it keeps its sign, one 0.005 behind goes inside.
 void tangent_plane_test()
 {
   const double t = 0.02, h = 0.01;
@@ -688,9 +690,9 @@ void tangent_plane_test()
   CHECK(voters[4][0] == internal::no_voter, "tangent planes: a box boundary vertex has no voters");
   std::vector<signed char> signs = { 1, -1, -1, 1, 1, 1 };
   std::vector<double> values = { 0.5, -0.5, -0.5, 0.5, 0.5, 0.5 };
+  const auto normal_of = [&](std::uint32_t i) -> const std::array<double, 3>& { return normals[i]; };
   const std::size_t changed = internal::sign_by_tangent_planes(
-      points, vertices, voters, [&](std::uint32_t i) -> const std::array<double, 3>& { return normals[i]; }, radius,
-      1e-12, signs, values);
+      points, neighbors, vertices, voters, normal_of, [](std::uint32_t) { return HUGE_VALF; }, radius, 1e-12, signs, values);
   CHECK(signs[0] == -1 && values[0] < 0 && std::abs(values[0] + t) < 1e-3,
         "tangent planes: a vertex between the faces of a plate goes inside, at the plate's half thickness");
   CHECK(signs[1] == 1 && std::abs(values[1] - 0.015) < 2e-3, "tangent planes: a vertex above the plate goes outside");
@@ -699,6 +701,27 @@ void tangent_plane_test()
   CHECK(signs[4] == 1 && values[4] == 0.5, "tangent planes: a box boundary vertex keeps its sign");
   CHECK(signs[5] == 1 && values[5] == 0.5, "tangent planes: voters without a normal do not vote");
   CHECK(changed == 3, "tangent planes: 3 vertices changed side, got " + std::to_string(changed));
+
+  // the upper face alone, and the plate again, with orientations that vouch for 0.01
+  std::vector<std::array<double, 3> > sheet;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(points[i][2] > 0) sheet.push_back(points[i]);
+  const internal::Point_neighbors sheet_neighbors(sheet);
+  const std::vector<std::array<double, 3> > below = { {{ 0.001, 0.002, t - 0.03 }}, {{ 0.001, 0.002, t - 0.005 }} };
+  const std::vector<internal::Voters> sheet_voters = internal::voters_of_vertices(below, { 0, 0 }, sheet_neighbors, radius);
+  const std::array<double, 3> up = {{ 0., 0., 1. }};
+  std::vector<signed char> sheet_signs = { 1, 1 };
+  std::vector<double> sheet_values = { 0.5, 0.5 };
+  internal::sign_by_tangent_planes(sheet, sheet_neighbors, below, sheet_voters,
+                                   [&](std::uint32_t) -> const std::array<double, 3>& { return up; },
+                                   [](std::uint32_t) { return 0.01f; }, radius, 1e-12, sheet_signs, sheet_values);
+  CHECK(sheet_signs[0] == 1 && sheet_values[0] == 0.5,
+        "tangent planes: a vertex deeper behind one wall than its voters vouch for keeps its sign");
+  CHECK(sheet_signs[1] == -1, "tangent planes: a vertex within the depth its voters vouch for goes inside");
+  signs = { 1, -1, -1, 1, 1, 1 };
+  internal::sign_by_tangent_planes(points, neighbors, vertices, voters, normal_of, [](std::uint32_t) { return 0.01f; },
+                                   radius, 1e-12, signs, values);
+  CHECK(signs[0] == -1, "tangent planes: a vertex between two walls goes inside deeper than its voters vouch for");
 }
 
 // The leaves in which F misses the points (surface_refinement.h): F linear (z - 0.5) on a
@@ -1124,8 +1147,8 @@ void point_normals_test()
   auto normals_with = [&](int threads) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     std::vector<std::array<double, 3> > normals;
-    std::vector<float> errors;
-    internal::estimate_point_normals(points, neighbors, which, 12, normals, errors);
+    std::vector<float> errors, radii;
+    internal::estimate_point_normals(points, neighbors, which, 12, normals, errors, radii);
     return normals;
   };
   const std::vector<std::array<double, 3> > one = normals_with(1), two = normals_with(2);
