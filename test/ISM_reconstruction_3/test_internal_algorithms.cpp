@@ -1165,7 +1165,10 @@ void point_normals_test()
 // (two walls z = 0 and z = 0.05, 0.05 apart, joined by a half-tube rim at x = 1), seeded on
 // the lower wall only: the lower wall is outside below (-z), the upper above (+z). The rim's
 // points, marked as not one sheet, must not pass the lower wall's side on: the upper wall
-// stays unoriented or right, never "-z outside".
+// stays unoriented or right, never "-z outside". (3) The plane again, with 8 neighbours (the
+// ring around a grid point): two wrong seeds side by side, A with one right seed in its ring,
+// B with three; B falls at once, A only when judged again without B (one round would leave A
+// standing on a tie and turn the points around it).
 void propagation_test()
 {
   using internal::Orientation_test;
@@ -1245,6 +1248,34 @@ void propagation_test()
     CHECK(upper_wrong == 0, "propagation: " << upper_wrong << " upper-wall points of the fold oriented across the rim");
     // the case is one the rule is needed for
     CHECK(upper_wrong_without > 0, "propagation: without the one-sheet rule the rim did not turn the upper wall");
+  }
+  {
+    std::vector<std::array<double, 3> > points, normals;
+    for(int i = 0; i < 30; ++i)
+      for(int j = 0; j < 30; ++j)
+      {
+        points.push_back({{ 0.01 * i, 0.01 * j, 0. }});
+        normals.push_back({{ 0., 0., (i + j) % 2 ? 1. : -1. }});
+      }
+    auto at = [](int i, int j) { return std::size_t(30 * i + j); };
+    std::vector<Orientation_test> tests(points.size());
+    auto seed = [&](std::size_t k, bool right) {
+      tests[k].confident = true;
+      tests[k].sign = static_cast<signed char>((normals[k][2] > 0) == right ? 1 : -1);
+      tests[k].relative = 1.;
+    };
+    for(Orientation_test& t : tests) t.leaf_size = 0.02;
+    const std::size_t a = at(15, 15), b = at(16, 15);
+    seed(a, false);
+    seed(b, false);
+    seed(at(14, 15), true);  // A's only right neighbour; backed by the seeds at i = 12, 13
+    for(int i : { 12, 13, 17, 18 })
+      for(int j : { 14, 15, 16 }) seed(at(i, j), true);
+    internal::propagate_orientations(points, normals, tests, 8, 0.5);
+    std::size_t wrong = 0;
+    for(std::size_t k = 0; k < points.size(); ++k) wrong += tests[k].sign * normals[k][2] <= 0;
+    CHECK(!tests[a].confident && !tests[b].confident, "propagation: a wrong seed backed only by a fallen wrong seed stands");
+    CHECK(wrong == 0, "propagation: " << wrong << " of 900 plane points point inside (a wrong seed judged once)");
   }
 }
 
