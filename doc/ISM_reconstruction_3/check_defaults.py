@@ -103,8 +103,8 @@ def parse_settings(root):
     from_np, _ = braced(code, fm.end() - 1)
     param_to_field = {}
     for field, tag, _ in re.findall(
-            r"\bs\.(\w+)\s*=\s*choose_parameter\s*\(\s*get_parameter\s*\(\s*np\s*,\s*[\w:]*?(\w+)\s*\)\s*,"
-            r"\s*([^;]+)\)\s*;", from_np):
+            r"\bs\.(\w+)\s*=\s*(?:choose_parameter|internal::integer_parameter)\s*\(\s*get_parameter\s*\(\s*np\s*,\s*[\w:]*?(\w+)\s*\)\s*,"
+            r"\s*([^;]+?)(?:,\s*\"\w+\")?\)\s*;", from_np):
         param_to_field[tag] = field
     ps = re.search(r"get_parameter\s*\(\s*np\s*,\s*[\w:]*paper_settings\s*\)\s*,\s*(\w+)\s*\)", from_np)
     if not ps:

@@ -123,6 +123,11 @@ public:
     std::size_t number_of_isolated_points = 0;  ///< points left out: their 12 nearest points spread more than 20 times farther than the median point's (stray returns far from the surface)
     std::size_t number_of_topology_passes = 0, number_of_inside_vertices = 0, number_of_flipped_islands = 0;
     std::size_t number_of_handle_vertices = 0;
+    /// inside vertices of the Ising signs (after the island removal), before the points'
+    /// tangent planes and the later steps: 0 means the model found no inside region (cells
+    /// too coarse for the points, e.g. a sphere of 300 random points: its centre outside, the
+    /// surface then comes from the tangent planes alone and fell into 3-8 parts on 8 of 10)
+    std::size_t number_of_ising_inside_vertices = 0;
     std::size_t number_of_tangent_plane_vertices = 0;  ///< vertices whose side the oriented tangent planes changed
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected by `surface_refinement_passes`
     std::size_t number_of_winding_number_vertices = 0;  ///< vertices re-signed by the winding number of the points (`winding_number_signs`)
@@ -160,6 +165,9 @@ private:
   Statistics m_stats;
   Point m_inner_point;
   Sphere m_bounding_sphere;
+  // set last: a run that threw after the values were filled (no inside vertex) or was
+  // cancelled at its end has values but no function
+  bool m_completed = false;
 
 public:
   /// \name Creation
@@ -208,8 +216,9 @@ public:
     `ism_surface_reconstruction()`.
     \return `false` if the `callback` cancelled the run.
     \throws std::invalid_argument for a parameter out of range
-    \throws std::runtime_error if no inside region was found, or far outliers make the box too
-    large for the bulk of the points to be resolved
+    \throws std::runtime_error if 99 % of the points lie within half their spacing of a plane
+    (an open sheet), no inside region was found, or far outliers make the box too large for
+    the bulk of the points to be resolved
     \throws std::length_error, before the allocation, if the points or the refinement would
     need more memory than the process may use (see the named parameter `memory_limit`)
   */
@@ -223,6 +232,7 @@ public:
   bool compute_implicit_function_with_settings(const Settings& settings)
   {
     settings.check();
+    m_completed = false;
     m_settings = settings;
     m_stats = Statistics{};
     m_value.clear();  // operator() is then +1 until this computation completes
@@ -240,6 +250,8 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     if(m_settings.remove_isolated_points) remove_isolated_points();
+    if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
+    ISM_reconstruction_3::internal::check_not_a_sheet(m_points, *m_point_neighbors);
     smooth_noisy_points();
     if(!refine())
       return false;
@@ -264,6 +276,7 @@ public:
       m_stats.number_of_flipped_islands =
           ISM_reconstruction_3::internal::remove_islands(leaves, m_sign, boundary, m_settings.minimum_island_fraction);
     m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
+    m_stats.number_of_ising_inside_vertices = m_stats.number_of_inside_vertices;
     m_stats.topology_time += timer.time();
     if(!report(0.9)) return false;
 
@@ -312,7 +325,9 @@ public:
     square_values();
     m_stats.distance_time = timer.time();
     find_inner_point();
-    return report(1.);
+    if(!report(1.)) return false;
+    m_completed = true;
+    return true;
   }
 
   /// \name Evaluation
@@ -322,25 +337,9 @@ public:
   /// `+1` everywhere before `compute_implicit_function()` completed.
   FT operator()(const Point& p) const
   {
-    const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
     // no function yet, or its computation was cancelled or threw: outside everywhere
     if(!is_computed()) return FT(1);
-    // a NaN is nowhere, so outside: the distance below would be NaN
-    if(std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2]))
-      return FT(2 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
-    const Cell_index r = m_tr->locate_root(p);
-    if(r < 0)
-    {
-      const Xyz c = {{ to_double(m_bounding_sphere.center().x()), to_double(m_bounding_sphere.center().y()),
-                       to_double(m_bounding_sphere.center().z()) }};
-      // the distance to the centre, positive: the small term relative, as the values inside
-      return FT(std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) + (x[2] - c[2]) * (x[2] - c[2])) +
-                1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
-    }
-    Cell_index c = r;
-    while(!m_tr->is_leaf(c))
-      c = m_tr->child(c, m_tr->child_side(c, p));
-    return FT(interpolate(c, x));
+    return value_at(p);
   }
 
   /// F(p), locating `p` by a walk across the leaves from the leaf `hint`
@@ -349,17 +348,14 @@ public:
   FT operator()(const Point& p, Cell_index& hint) const
   {
     if(!is_computed()) return FT(1);
-    const Cell_index c = m_tr->walk_to(p, hint);
-    if(c < 0) return (*this)(p);
-    hint = c;
-    return FT(interpolate(c, {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }}));
+    return value_at(p, hint);
   }
 
   /// a sphere holding the points, inside which the function is meant to be meshed
   Sphere bounding_sphere() const { return m_bounding_sphere; }
   /// `true` once `compute_implicit_function()` completed (it was called, and neither
   /// cancelled nor thrown): only then are there values, an inner point and a surface
-  bool is_computed() const { return m_tr && m_value.size() == m_tr->number_of_vertices(); }
+  bool is_computed() const { return m_completed; }
   /*! a point where the function is negative (the deepest inside vertex)
       \throws std::logic_error if `compute_implicit_function()` was not called or did not
       complete (cancelled, or threw): there is no such point then */
@@ -910,8 +906,8 @@ private:
     std::vector<I::Orientation_test> tests(n);
     std::vector<char> outside(n, 0);
     I::for_each_index(n, [&](std::size_t j) {
-      tests[j] = I::ism_orientation_of(*this, xyz[j], normals[j], leaf_of_point(which[j]));
-      if(!tests[j].confident) outside[j] = (*this)(Point(xyz[j][0], xyz[j][1], xyz[j][2])) > 0;
+      tests[j] = I::ism_orientation_of(Values_as_they_stand{*this}, xyz[j], normals[j], leaf_of_point(which[j]));
+      if(!tests[j].confident) outside[j] = value_at(Point(xyz[j][0], xyz[j][1], xyz[j][2])) > 0;
     });
     // A point votes if its neighbourhood is one sheet (coplanarity error below 0.05, or twice
     // the median with noise: 0.08 at 0.25 %) and its orientation is sure: tested directly, or
@@ -978,7 +974,7 @@ private:
         [&](std::uint32_t v, const Xyz& u) {
           const Xyz& x = m_vertex_xyz[v];
           const double l = 3. * double(m_voting_radius[v]);
-          return (*this)(Point(x[0] + l * u[0], x[1] + l * u[1], x[2] + l * u[2])) > 0;
+          return value_at(Point(x[0] + l * u[0], x[1] + l * u[1], x[2] + l * u[2])) > 0;
         },
         m_sign, m_value);
     m_stats.number_of_escaped_vertices = turned;
@@ -1013,7 +1009,7 @@ private:
         const double dot = m[0] * n[0] + m[1] * n[1] + m[2] * n[2];
         if(dot != 0) return dot > 0 ? 1 : -1;
       }
-      return int(I::ism_orientation_of(*this, m_points[i], n, leaf_of_point(i)).sign);
+      return int(I::ism_orientation_of(Values_as_they_stand{*this}, m_points[i], n, leaf_of_point(i)).sign);
     }, spacing);
     CGAL_ISM_TIMER_MARK(step, "winding number: dipoles");
     const I::Winding_number w(m_points, dipoles);
@@ -1158,6 +1154,51 @@ private:
     m_stats.number_of_leaves = tr.number_of_leaves();
     m_stats.number_of_vertices = tr.number_of_vertices();
   }
+
+  // F(p) from the values as they stand: operator() once the computation completed; the
+  // steps after the distances (tangent planes, escape rays) read it before
+  FT value_at(const Point& p) const
+  {
+    // vertices the surface refinement added have no value yet: outside, as before them
+    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
+    // a NaN is nowhere, so outside: the distance below would be NaN
+    if(std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2]))
+      return FT(2 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
+    const Cell_index r = m_tr->locate_root(p);
+    if(r < 0)
+    {
+      const Xyz c = {{ to_double(m_bounding_sphere.center().x()), to_double(m_bounding_sphere.center().y()),
+                       to_double(m_bounding_sphere.center().z()) }};
+      // the distance to the centre, positive: the small term relative, as the values inside
+      return FT(std::sqrt((x[0] - c[0]) * (x[0] - c[0]) + (x[1] - c[1]) * (x[1] - c[1]) + (x[2] - c[2]) * (x[2] - c[2])) +
+                1e-9 * std::sqrt(to_double(m_bounding_sphere.squared_radius())));
+    }
+    Cell_index c = r;
+    while(!m_tr->is_leaf(c))
+      c = m_tr->child(c, m_tr->child_side(c, p));
+    return FT(interpolate(c, x));
+  }
+
+  FT value_at(const Point& p, Cell_index& hint) const
+  {
+    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    const Cell_index c = m_tr->walk_to(p, hint);
+    if(c < 0) return value_at(p);
+    hint = c;
+    return FT(interpolate(c, {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }}));
+  }
+
+  // what ism_orientation_of() reads while the computation runs (operator() is +1 until it
+  // completes)
+  struct Values_as_they_stand
+  {
+    typedef typename ISM_reconstruction_function::Point Point;
+    typedef typename ISM_reconstruction_function::Triangulation Triangulation;
+    const ISM_reconstruction_function& function;
+    const Triangulation& triangulation() const { return *function.m_tr; }
+    FT operator()(const Point& p, Cell_index& hint) const { return function.value_at(p, hint); }
+  };
 
   void find_inner_point()
   {

@@ -224,6 +224,23 @@ int main(int argc, char** argv)
     CHECK(throws_logic_error([&] { Mesh m; ISM::extract_surface(f, m, 0, 0.5, -0.53); }),
           "cancelled: extract_surface() throws std::logic_error");
     CHECK(throws_logic_error([&] { f.get_inner_point(); }), "cancelled: get_inner_point() throws std::logic_error");
+    // a run that throws after its values are filled (12 points on a sphere: no vertex
+    // inside) is no function either: is_computed() was true, F read 0.80 and
+    // extract_surface() gave an empty mesh (an independent black-box run, session 41)
+    {
+      std::vector<Point_3> twelve;
+      for(int i = 0; i < 12; ++i)
+      {
+        const double z = -1 + (2 * i + 1) / 12., r = std::sqrt(1 - z * z), a = 2.4 * i;
+        twelve.push_back(Point_3(r * std::cos(a), r * std::sin(a), z));
+      }
+      CGAL::ISM_reconstruction_function<K> thrown(twelve);
+      bool threw = false;
+      try { thrown.compute_implicit_function(); } catch(const std::runtime_error&) { threw = true; }
+      CHECK(threw && !thrown.is_computed() && thrown(Point_3(0, 0, 0)) == 1 &&
+                throws_logic_error([&] { Mesh m; ISM::extract_surface(thrown, m, 0, 0.5, -0.53); }),
+            "thrown: not computed, +1 everywhere, extract_surface() throws std::logic_error");
+    }
     // extract_surface()'s arguments are checked as the named parameters they mirror; the
     // defaults' Taubin filter, 1.00085 at its peak, inflated a sphere to 126 times its radius
     // in 10,000 iterations

@@ -15,9 +15,11 @@
 #include <cstdint>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace ISM_reconstruction_3 {
@@ -170,6 +172,9 @@ struct Settings
                                     " would inflate the surface (at most " +
                                     std::to_string(int(std::log(1.1) / std::log(gain))) + " iterations)");
     }
+    if(distance_estimate != NEAREST_POINT_SQUARED_DISTANCE && distance_estimate != NEAREST_POINT_DISTANCE &&
+       distance_estimate != LOCAL_PLANE_DISTANCE)
+      fail("distance_estimate", std::to_string(int(distance_estimate)), "(one of the three Distance_estimate values)");
     if(!(box_margin > 0 && box_margin <= 10)) fail("box_margin", str(box_margin), "(0, 10]");
     if(!(minimum_island_fraction >= 0 && minimum_island_fraction < 1))
       fail("minimum_island_fraction", str(minimum_island_fraction), "[0, 1)");
@@ -188,6 +193,43 @@ struct Settings
   }
 };
 
+namespace internal {
+
+// An integer parameter may be given as any arithmetic type. Converting a NaN or a value
+// beyond the field's type is undefined or wraps (maximum_depth(4294967320LL) ran at depth
+// 24, maximum_depth(NaN) printed -2147483648), and a fraction would be cut silently
+// (maximum_depth(2.7) ran at 2): refused here, naming the parameter, before the conversion.
+template <class T, class V>
+T integer_parameter(const V& v, T, const char* name)
+{
+  bool exact = true;
+  if constexpr(std::is_floating_point<V>::value)
+    exact = v == std::floor(v) && v >= double(std::numeric_limits<T>::lowest()) &&
+            v < std::ldexp(1., std::numeric_limits<T>::digits);  // 2^digits: max() + 1, exact
+  else if constexpr(std::is_integral<V>::value)
+  {
+    bool negative = false;
+    if constexpr(std::is_signed<V>::value) negative = v < 0;
+    exact = negative ? std::is_signed<T>::value && std::intmax_t(v) >= std::intmax_t(std::numeric_limits<T>::lowest())
+                     : std::uintmax_t(v) <= std::uintmax_t(std::numeric_limits<T>::max());
+  }
+  if(!exact)
+  {
+    std::ostringstream os;
+    os << "ISM reconstruction: parameter " << name << " = " << std::setprecision(12) << v
+       << " is not an integer in the range of its type";
+    throw std::invalid_argument(os.str());
+  }
+  return T(v);
+}
+template <class T>
+T integer_parameter(const CGAL::internal_np::Param_not_found&, T default_value, const char*)
+{
+  return default_value;
+}
+
+} // namespace internal
+
 /// Reads the named parameters into `Settings` (the paper's defaults when `paper_settings(true)`).
 template <class NamedParameters>
 Settings settings_from_parameters(const NamedParameters& np)
@@ -198,18 +240,18 @@ Settings settings_from_parameters(const NamedParameters& np)
   const bool paper = choose_parameter(get_parameter(np, inp::paper_settings), false);
   const Settings d = paper ? Settings::paper() : Settings();
   Settings s;
-  s.maximum_depth = choose_parameter(get_parameter(np, inp::maximum_depth), d.maximum_depth);
-  s.min_points_per_cell = choose_parameter(get_parameter(np, CGAL::internal_np::min_points_per_cell), d.min_points_per_cell);
+  s.maximum_depth = internal::integer_parameter(get_parameter(np, inp::maximum_depth), d.maximum_depth, "maximum_depth");
+  s.min_points_per_cell = internal::integer_parameter(get_parameter(np, CGAL::internal_np::min_points_per_cell), d.min_points_per_cell, "min_points_per_cell");
   s.coplanarity_threshold = choose_parameter(get_parameter(np, inp::coplanarity_threshold), d.coplanarity_threshold);
   s.empty_cell_error = choose_parameter(get_parameter(np, inp::empty_cell_error), d.empty_cell_error);
   s.initial_temperature = choose_parameter(get_parameter(np, inp::initial_temperature), d.initial_temperature);
   s.warm_start_temperature = choose_parameter(get_parameter(np, inp::warm_start_temperature), d.warm_start_temperature);
   s.cooling_factor = choose_parameter(get_parameter(np, inp::cooling_factor), d.cooling_factor);
-  s.number_of_sweeps = choose_parameter(get_parameter(np, inp::number_of_sweeps), d.number_of_sweeps);
-  s.warm_start_interval = choose_parameter(get_parameter(np, inp::warm_start_interval), d.warm_start_interval);
-  s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), d.random_seed);
-  s.smoothing_iterations = choose_parameter(get_parameter(np, inp::smoothing_iterations), d.smoothing_iterations);
-  s.crossing_neighbors = choose_parameter(get_parameter(np, inp::crossing_neighbors), d.crossing_neighbors);
+  s.number_of_sweeps = internal::integer_parameter(get_parameter(np, inp::number_of_sweeps), d.number_of_sweeps, "number_of_sweeps");
+  s.warm_start_interval = internal::integer_parameter(get_parameter(np, inp::warm_start_interval), d.warm_start_interval, "warm_start_interval");
+  s.random_seed = internal::integer_parameter(get_parameter(np, CGAL::internal_np::random_seed), d.random_seed, "random_seed");
+  s.smoothing_iterations = internal::integer_parameter(get_parameter(np, inp::smoothing_iterations), d.smoothing_iterations, "smoothing_iterations");
+  s.crossing_neighbors = internal::integer_parameter(get_parameter(np, inp::crossing_neighbors), d.crossing_neighbors, "crossing_neighbors");
   s.smoothing_lambda = choose_parameter(get_parameter(np, inp::smoothing_lambda), d.smoothing_lambda);
   s.smoothing_mu = choose_parameter(get_parameter(np, inp::smoothing_mu), d.smoothing_mu);
   s.clamp_box_boundary = choose_parameter(get_parameter(np, inp::clamp_box_boundary), d.clamp_box_boundary);
@@ -218,18 +260,17 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.minimum_island_fraction = choose_parameter(get_parameter(np, inp::minimum_island_fraction), d.minimum_island_fraction);
   s.thin_handle_depth = choose_parameter(get_parameter(np, inp::thin_handle_depth), d.thin_handle_depth);
   s.tangent_plane_signs = choose_parameter(get_parameter(np, inp::tangent_plane_signs), d.tangent_plane_signs);
-  s.surface_refinement_passes = choose_parameter(get_parameter(np, inp::surface_refinement_passes), d.surface_refinement_passes);
+  s.surface_refinement_passes = internal::integer_parameter(get_parameter(np, inp::surface_refinement_passes), d.surface_refinement_passes, "surface_refinement_passes");
   s.surface_refinement_tolerance =
       choose_parameter(get_parameter(np, inp::surface_refinement_tolerance), d.surface_refinement_tolerance);
-  s.escape_rays = choose_parameter(get_parameter(np, inp::escape_rays), d.escape_rays);
+  s.escape_rays = internal::integer_parameter(get_parameter(np, inp::escape_rays), d.escape_rays, "escape_rays");
   s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
   s.join_islands = choose_parameter(get_parameter(np, inp::join_islands), d.join_islands);
   s.remove_isolated_points = choose_parameter(get_parameter(np, inp::remove_isolated_points), d.remove_isolated_points);
-  s.point_smoothing_iterations =
-      choose_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations);
-  s.point_smoothing_neighbors = choose_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors);
+  s.point_smoothing_iterations = internal::integer_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations, "point_smoothing_iterations");
+  s.point_smoothing_neighbors = internal::integer_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors, "point_smoothing_neighbors");
   s.point_smoothing_noise = choose_parameter(get_parameter(np, inp::point_smoothing_noise), d.point_smoothing_noise);
-  s.memory_limit = choose_parameter(get_parameter(np, inp::memory_limit), d.memory_limit);
+  s.memory_limit = internal::integer_parameter(get_parameter(np, inp::memory_limit), d.memory_limit, "memory_limit");
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   return s;
 }
