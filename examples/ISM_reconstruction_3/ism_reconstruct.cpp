@@ -314,6 +314,11 @@ const std::vector<Option>& options()
                        "that of their bulk, up to 48)"),
     ISM_INTEGER_OPTION("--min-points-per-cell", min_points_per_cell,
                        "a cell is fitted and subdivided only with at least this many points"),
+    Option{"--inherit-sparse-cell-planes", "sparse_cell_planes", nullptr,
+           "a cell with fewer than --min-points-per-cell points inherits its parent's plane (the "
+           "paper) instead of taking the plane of that many points nearest its own",
+           [](Settings& s, const std::string&, const std::string&) { s.sparse_cell_planes = false; },
+           [](const Settings& s) { return std::string(s.sparse_cell_planes ? "off" : "on"); }},
     ISM_REAL_OPTION("--coplanarity-threshold", coplanarity_threshold,
                     "a cell whose coplanarity error l0/(l0+l1+l2) is below this is not subdivided"),
     ISM_REAL_OPTION("--empty-cell-error", empty_cell_error,

@@ -96,7 +96,10 @@ int main(int argc, char** argv)
     if(file != std::string("bunny00.off")) continue;
     // 3,000 points on the bunny: the samplings on which the tip of an ear came out as a
     // second component, cut off at a neck too thin for the leaves (3 and 2 components on
-    // seeds 4 and 8 with join_islands(false)), give one component of genus 0
+    // seeds 4 and 8 with join_islands(false)), give one component of genus 0. Since the
+    // sparse cells take the planes of their nearest points (sparse_cell_planes), seed 4
+    // needs no joining: one of the two must still need it, or this tests nothing of it.
+    bool joining_needed = false;
     for(unsigned int seed : { 4u, 8u })
     {
       std::vector<Point_3> sparse;
@@ -107,9 +110,11 @@ int main(int argc, char** argv)
       const Topology j = topology(joined), a = topology(apart);
       std::cout << "  bunny00 at 3000 points, seed " << seed << ": " << j.components << " component(s), genus " << j.genus
                 << " (without join_islands: " << a.components << ")" << std::endl;
-      CHECK(j.closed && j.manifold && j.components == 1 && j.genus == 0 && a.components > 1,
-            "bunny00 at 3000 points, seed " + std::to_string(seed) + ": one component of genus 0 (without joining more)");
+      CHECK(j.closed && j.manifold && j.components == 1 && j.genus == 0,
+            "bunny00 at 3000 points, seed " + std::to_string(seed) + ": one component of genus 0");
+      joining_needed = joining_needed || a.components > 1;
     }
+    CHECK(joining_needed, "bunny00 at 3000 points, seed 4 or 8: more than one component without join_islands");
   }
 
   // --- API: named parameters (ours first, CGAL's chained after), a Polyhedron_3 output,

@@ -67,6 +67,7 @@ enum memory_limit_t { memory_limit };
 enum escape_rays_t { escape_rays };
 enum winding_number_signs_t { winding_number_signs };
 enum join_islands_t { join_islands };
+enum sparse_cell_planes_t { sparse_cell_planes };
 enum remove_isolated_points_t { remove_isolated_points };
 
 } // namespace internal_np
@@ -118,6 +119,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(memory_limit)
 CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
 CGAL_ISM_ADD_NAMED_PARAMETER(winding_number_signs)
 CGAL_ISM_ADD_NAMED_PARAMETER(join_islands)
+CGAL_ISM_ADD_NAMED_PARAMETER(sparse_cell_planes)
 CGAL_ISM_ADD_NAMED_PARAMETER(remove_isolated_points)
 /// \endcond
 

@@ -37,6 +37,7 @@ struct Settings
   static constexpr int deepest_level = 48;  ///< the largest `maximum_depth`, also with the levels far outliers add
   int maximum_depth = 24;                 ///< deepest level of a cell (the paper's maximum level)
   int min_points_per_cell = 6;            ///< fitting and subdivision need this many points (paper: 5 to 10)
+  bool sparse_cell_planes = true;         ///< a cell with fewer points takes the plane of that many points nearest its own (paper: its parent's plane)
   double coplanarity_threshold = 0.;      ///< a cell whose coplanarity error is below this is not subdivided
   double empty_cell_error = 0.05;         ///< eps_empty as a fraction of [eps_min, eps_max]
   double initial_temperature = 15.;       ///< annealing from scratch (the first pass), in units of the mean |H_e|
@@ -106,6 +107,7 @@ struct Settings
     s.distance_estimate = NEAREST_POINT_SQUARED_DISTANCE;
     s.warm_start_interval = 1000;
     s.min_points_per_cell = 8;
+    s.sparse_cell_planes = false;
     s.coplanarity_threshold = 1e-3;
     s.minimum_island_fraction = 0;
     s.thin_handle_depth = 0;
@@ -266,6 +268,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.escape_rays = internal::integer_parameter(get_parameter(np, inp::escape_rays), d.escape_rays, "escape_rays");
   s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
   s.join_islands = choose_parameter(get_parameter(np, inp::join_islands), d.join_islands);
+  s.sparse_cell_planes = choose_parameter(get_parameter(np, inp::sparse_cell_planes), d.sparse_cell_planes);
   s.remove_isolated_points = choose_parameter(get_parameter(np, inp::remove_isolated_points), d.remove_isolated_points);
   s.point_smoothing_iterations = internal::integer_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations, "point_smoothing_iterations");
   s.point_smoothing_neighbors = internal::integer_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors, "point_smoothing_neighbors");
