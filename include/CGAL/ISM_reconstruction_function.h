@@ -250,6 +250,7 @@ public:
     CGAL::Real_timer timer;
     timer.start();
     if(m_settings.remove_isolated_points) remove_isolated_points();
+    // one tree of the points for the sheet test, the noise measure and the smoothing
     if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
     ISM_reconstruction_3::internal::check_not_a_sheet(m_points, *m_point_neighbors);
     smooth_noisy_points();
@@ -432,7 +433,6 @@ private:
   void smooth_noisy_points()
   {
     namespace I = ISM_reconstruction_3::internal;
-    if(!m_point_neighbors) m_point_neighbors.reset(new I::Point_neighbors(m_points));
     // 20,000 neighbourhoods measure the median well and cost 20 ms; measured also without
     // smoothing, since the thin-handle removal asks whether the points are noisy
     m_stats.neighborhood_coplanarity =
@@ -1174,10 +1174,12 @@ private:
 
   // F(p) from the values as they stand: operator() once the computation completed; the
   // steps after the distances (tangent planes, escape rays) read it before
+  // vertices the surface refinement added have no value yet: F reads outside, as before them
+  bool has_values() const { return m_tr && m_value.size() == m_tr->number_of_vertices(); }
+
   FT value_at(const Point& p) const
   {
-    // vertices the surface refinement added have no value yet: outside, as before them
-    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    if(!has_values()) return FT(1);
     const Xyz x = {{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }};
     // a NaN is nowhere, so outside: the distance below would be NaN
     if(std::isnan(x[0]) || std::isnan(x[1]) || std::isnan(x[2]))
@@ -1199,7 +1201,7 @@ private:
 
   FT value_at(const Point& p, Cell_index& hint) const
   {
-    if(!m_tr || m_value.size() != m_tr->number_of_vertices()) return FT(1);
+    if(!has_values()) return FT(1);
     const Cell_index c = m_tr->walk_to(p, hint);
     if(c < 0) return value_at(p);
     hint = c;
