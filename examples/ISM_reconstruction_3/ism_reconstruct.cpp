@@ -319,6 +319,10 @@ const std::vector<Option>& options()
            "paper) instead of taking the plane of that many points nearest its own",
            [](Settings& s, const std::string&, const std::string&) { s.sparse_cell_planes = false; },
            [](const Settings& s) { return std::string(s.sparse_cell_planes ? "off" : "on"); }},
+    ISM_INTEGER_OPTION("--coarser-refinements", coarser_refinements,
+                       "if the in/out signs see (almost) no inside and the later steps make it in pieces "
+                       "(too few points for the leaves), compute again with twice --min-points-per-cell, "
+                       "up to this many times; 0: never"),
     ISM_REAL_OPTION("--coplanarity-threshold", coplanarity_threshold,
                     "a cell whose coplanarity error l0/(l0+l1+l2) is below this is not subdivided"),
     ISM_REAL_OPTION("--empty-cell-error", empty_cell_error,
@@ -812,11 +816,12 @@ int run(int argc, char** argv)
               << CGAL::ISM_reconstruction_3::Settings::deepest_level
               << "): the surface may be coarse; remove the far outliers, or reconstruct the parts one by one\n";
   // the surface then stands on the tangent planes alone: in parts, or lumpy (random points
-  // on a sphere, 150-500 of them: 1 part where the model found an inside, 1-10 where not)
+  // on a sphere, 150-500 of them: 1 part where the model found an inside, 1-10 where not,
+  // before the coarser refinements; after them, where even leaves of 24 points see none)
   if(stats.number_of_ising_inside_vertices == 0)
-    std::cerr << "ism_reconstruct: warning: the in/out signs (Ising model) found no inside region: the cells are "
-                 "too coarse for "
-              << stats.number_of_points
+    std::cerr << "ism_reconstruct: warning: the in/out signs (Ising model) found no inside region for "
+              << stats.number_of_points << " points, also with leaves of up to "
+              << function->settings().min_points_per_cell
               << " points; the surface comes from the points' tangent planes alone and may be in parts or "
                  "lumpy: sample the surface more densely\n";
   if(cl.quiet) return SUCCESS;
@@ -837,7 +842,13 @@ int run(int argc, char** argv)
      << "leaves:      " << stats.number_of_leaves << " (" << stats.number_of_vertices << " vertices, "
      << stats.number_of_inside_vertices << " inside, deepest level " << stats.deepest_level
      << (stats.added_levels > 0 ? " (" + std::to_string(stats.added_levels) + " levels added for far outliers or parts far apart)" : std::string())
-     << ", " << stats.number_of_topology_passes << " topology passes)\n"
+     << ", " << stats.number_of_topology_passes << " topology passes"
+     << (stats.number_of_coarser_refinements > 0
+             ? ", " + std::to_string(function->settings().min_points_per_cell) + " points per leaf after " +
+                   std::to_string(stats.number_of_coarser_refinements) + " coarser refinement" +
+                   (stats.number_of_coarser_refinements > 1 ? "s" : "")
+             : std::string())
+     << ")\n"
      << "time (s):    reading     " << std::setw(8) << read_time << "\n"
      << "             refinement  " << std::setw(8) << stats.refinement_time << "\n"
      << "             topology    " << std::setw(8) << stats.topology_time << "\n"

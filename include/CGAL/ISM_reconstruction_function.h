@@ -126,8 +126,14 @@ public:
     /// inside vertices of the Ising signs (after the island removal), before the points'
     /// tangent planes and the later steps: 0 means the model found no inside region (cells
     /// too coarse for the points, e.g. a sphere of 300 random points: its centre outside, the
-    /// surface then comes from the tangent planes alone and fell into 3-8 parts on 8 of 10)
+    /// surface then comes from the tangent planes alone and fell into 3-8 parts on 8 of 10,
+    /// before `coarser_refinements`)
     std::size_t number_of_ising_inside_vertices = 0;
+    /// times the computation was redone with twice `min_points_per_cell` because the later
+    /// steps made more inside clusters than the Ising signs had inside vertices
+    /// (`coarser_refinements`); the statistics are those of the last computation, and
+    /// `settings()` holds the `min_points_per_cell` it used
+    std::size_t number_of_coarser_refinements = 0;
     std::size_t number_of_tangent_plane_vertices = 0;  ///< vertices whose side the oriented tangent planes changed
     std::size_t number_of_misfit_leaves = 0;  ///< leaves bisected by `surface_refinement_passes`
     std::size_t number_of_winding_number_vertices = 0;  ///< vertices re-signed by the winding number of the points (`winding_number_signs`)
@@ -232,6 +238,34 @@ public:
   bool compute_implicit_function_with_settings(const Settings& settings)
   {
     settings.check();
+    // Why: the stop test counts points, not lengths, so few points (a sphere of 150 to 400
+    // random points) are refined to leaves of 6 points as long as the sphere is thick. The
+    // Ising signs then found no inside, or a vertex or two, on most such samplings, and the
+    // tangent planes made the inside in 2 to 10 pieces. Leaves of 12 or 24 points keep
+    // vertices deep inside whose edges cross the surface. Redone only when the steps after
+    // the Ising signs leave no inside, or more inside clusters than the signs had inside
+    // vertices: two small objects, one inside vertex each, are not.
+    Settings s = settings;
+    for(std::size_t coarser = 0;; ++coarser)
+    {
+      const bool may_coarsen = coarser < std::size_t(settings.coarser_refinements) &&
+                               std::size_t(s.min_points_per_cell) < number_of_given_points();
+      bool coarser_needed = false;
+      if(!compute_once(s, may_coarsen, coarser_needed)) return false;
+      m_stats.number_of_coarser_refinements = coarser;
+      if(!coarser_needed) return true;
+      s.min_points_per_cell *= 2;
+    }
+  }
+
+private:
+  // the input's size (a computation may have left isolated points out of m_points)
+  std::size_t number_of_given_points() const { return m_given_points.empty() ? m_points.size() : m_given_points.size(); }
+
+  // one computation with `settings`; if `may_coarsen`, one that would need coarser leaves
+  // stops after the signs with `coarser_needed` set
+  bool compute_once(const Settings& settings, bool may_coarsen, bool& coarser_needed)
+  {
     m_completed = false;
     m_settings = settings;
     m_stats = Statistics{};
@@ -322,6 +356,14 @@ public:
       m_stats.number_of_inside_vertices = std::size_t(std::count(m_sign.begin(), m_sign.end(), -1));
     }
     m_point_neighbors.reset();
+    // no inside at all (find_inner_point() would refuse it), or pieces the signs did not see
+    const std::size_t inside_clusters =
+        may_coarsen ? ISM_reconstruction_3::internal::number_of_inside_clusters(leaves, m_sign) : 0;
+    if(may_coarsen && (inside_clusters == 0 || inside_clusters > m_stats.number_of_ising_inside_vertices))
+    {
+      coarser_needed = true;
+      return true;
+    }
     CGAL_ISM_TIMER_MARK(step, "joined islands");
     square_values();
     m_stats.distance_time = timer.time();
@@ -331,6 +373,7 @@ public:
     return true;
   }
 
+public:
   /// \name Evaluation
   /// @{
 

@@ -388,7 +388,7 @@ if run help 0 --help; then
               --initial-temperature --cooling-factor --sweeps --warm-start-interval --seed \
               --smoothing-iterations --smoothing-lambda --smoothing-mu --no-clamp --distance \
               --box-margin --minimum-island-fraction --thin-handle-depth --no-tangent-planes \
-              --surface-refinement-passes --surface-refinement-tolerance --crossing-neighbors \
+              --surface-refinement-passes --surface-refinement-tolerance --crossing-neighbors --coarser-refinements \
               --memory-limit --paper --tets --quiet; do
     grep -Eq -- "^ $flag\b.*\[[^]]+\]\$" help.records || fail "help: no entry for $flag ending with its [default]"
   done

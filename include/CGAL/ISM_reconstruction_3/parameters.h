@@ -68,6 +68,7 @@ enum escape_rays_t { escape_rays };
 enum winding_number_signs_t { winding_number_signs };
 enum join_islands_t { join_islands };
 enum sparse_cell_planes_t { sparse_cell_planes };
+enum coarser_refinements_t { coarser_refinements };
 enum remove_isolated_points_t { remove_isolated_points };
 
 } // namespace internal_np
@@ -120,6 +121,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(escape_rays)
 CGAL_ISM_ADD_NAMED_PARAMETER(winding_number_signs)
 CGAL_ISM_ADD_NAMED_PARAMETER(join_islands)
 CGAL_ISM_ADD_NAMED_PARAMETER(sparse_cell_planes)
+CGAL_ISM_ADD_NAMED_PARAMETER(coarser_refinements)
 CGAL_ISM_ADD_NAMED_PARAMETER(remove_isolated_points)
 /// \endcond
 

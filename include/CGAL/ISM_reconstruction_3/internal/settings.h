@@ -38,6 +38,10 @@ struct Settings
   int maximum_depth = 24;                 ///< deepest level of a cell (the paper's maximum level)
   int min_points_per_cell = 6;            ///< fitting and subdivision need this many points (paper: 5 to 10)
   bool sparse_cell_planes = true;         ///< a cell with fewer points takes the plane of that many points nearest its own (paper: its parent's plane)
+  /*! if the steps after the Ising signs leave no inside, or more inside clusters than the signs had inside
+      vertices (leaves too long for few points), the computation is redone with twice `min_points_per_cell`, up
+      to this many times; 0: never (the paper) */
+  int coarser_refinements = 2;
   double coplanarity_threshold = 0.;      ///< a cell whose coplanarity error is below this is not subdivided
   double empty_cell_error = 0.05;         ///< eps_empty as a fraction of [eps_min, eps_max]
   double initial_temperature = 15.;       ///< annealing from scratch (the first pass), in units of the mean |H_e|
@@ -108,6 +112,7 @@ struct Settings
     s.warm_start_interval = 1000;
     s.min_points_per_cell = 8;
     s.sparse_cell_planes = false;
+    s.coarser_refinements = 0;
     s.coplanarity_threshold = 1e-3;
     s.minimum_island_fraction = 0;
     s.thin_handle_depth = 0;
@@ -135,6 +140,8 @@ struct Settings
       fail("maximum_depth", std::to_string(maximum_depth), ("[1, " + std::to_string(deepest_level) + "]").c_str());
     if(min_points_per_cell < 3 || min_points_per_cell > 1000000)
       fail("min_points_per_cell", std::to_string(min_points_per_cell), "[3, 1000000]");
+    if(coarser_refinements < 0 || coarser_refinements > 10)
+      fail("coarser_refinements", std::to_string(coarser_refinements), "[0, 10]");
     if(!(coplanarity_threshold >= 0 && coplanarity_threshold < 1. / 3))
       fail("coplanarity_threshold", str(coplanarity_threshold), "[0, 1/3)");
     if(!(empty_cell_error >= 0 && empty_cell_error <= 1)) fail("empty_cell_error", str(empty_cell_error), "[0, 1]");
@@ -269,6 +276,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.winding_number_signs = choose_parameter(get_parameter(np, inp::winding_number_signs), d.winding_number_signs);
   s.join_islands = choose_parameter(get_parameter(np, inp::join_islands), d.join_islands);
   s.sparse_cell_planes = choose_parameter(get_parameter(np, inp::sparse_cell_planes), d.sparse_cell_planes);
+  s.coarser_refinements = internal::integer_parameter(get_parameter(np, inp::coarser_refinements), d.coarser_refinements, "coarser_refinements");
   s.remove_isolated_points = choose_parameter(get_parameter(np, inp::remove_isolated_points), d.remove_isolated_points);
   s.point_smoothing_iterations = internal::integer_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations, "point_smoothing_iterations");
   s.point_smoothing_neighbors = internal::integer_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors, "point_smoothing_neighbors");

@@ -255,6 +255,18 @@ void equal_sign_clusters(const Triangulation& tr, const std::vector<signed char>
   }
 }
 
+// The number of clusters of inside vertices (connected by leaf edges).
+template <class Triangulation>
+std::size_t number_of_inside_clusters(const Triangulation& tr, const std::vector<signed char>& signs)
+{
+  std::vector<std::uint32_t> root, size;
+  equal_sign_clusters(tr, signs, root, size);
+  std::size_t clusters = 0;
+  for(std::size_t v = 0; v < signs.size(); ++v)
+    if(root[v] == v && signs[v] < 0) ++clusters;
+  return clusters;
+}
+
 // Flips small islands of the in/out labelling: a cluster of inside vertices (connected by
 // leaf edges) smaller than `fraction` of the largest inside cluster becomes outside, and a
 // cluster of outside vertices that does not reach the box boundary and is smaller than that
