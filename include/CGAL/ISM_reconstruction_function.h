@@ -23,6 +23,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/isolated_points.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/ISM_reconstruction_3/internal/leaf_vertices.h>
+#include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
 #include <CGAL/ISM_reconstruction_3/internal/tangent_plane_signs.h>
 #include <CGAL/ISM_reconstruction_3/internal/surface_refinement.h>
 #include <CGAL/ISM_reconstruction_3/internal/escape_rays.h>
@@ -130,7 +131,7 @@ public:
     /// before `coarser_refinements`)
     std::size_t number_of_ising_inside_vertices = 0;
     /// times the computation was redone with twice `min_points_per_cell` because the later
-    /// steps made more inside clusters than the Ising signs had inside vertices
+    /// steps left no inside, or more inside clusters than the Ising signs had inside vertices
     /// (`coarser_refinements`); the statistics are those of the last computation, and
     /// `settings()` holds the `min_points_per_cell` it used
     std::size_t number_of_coarser_refinements = 0;
@@ -374,16 +375,23 @@ private:
     }
     m_point_neighbors.reset();
     // no inside at all (find_inner_point() would refuse it), or pieces the signs did not see
+    // (the distance from the points to the surface only where a retry needs it: it builds a
+    // kd-tree of the crossings, and every input's first computation may coarsen)
     if(may_coarsen || max_miss > 0)
     {
       const std::size_t inside_clusters = ISM_reconstruction_3::internal::number_of_inside_clusters(leaves, m_sign);
-      miss = inside_clusters == 0 ? HUGE_VAL : ISM_reconstruction_3::internal::median_miss(m_points, leaves, m_vertex_xyz, m_value);
+      const bool coarser_needed =
+          may_coarsen && (inside_clusters == 0 || inside_clusters > m_stats.number_of_ising_inside_vertices);
+      if(coarser_needed || max_miss > 0)
+        miss = inside_clusters == 0 ? HUGE_VAL
+                                    : ISM_reconstruction_3::internal::median_distance_to_crossings(
+                                          m_points, m_vertex_xyz, leaves.cells(), m_value);
       if(max_miss > 0 && !(miss <= max_miss))
       {
         outcome = WORSE;
         return true;
       }
-      if(may_coarsen && (inside_clusters == 0 || inside_clusters > m_stats.number_of_ising_inside_vertices))
+      if(coarser_needed)
       {
         outcome = COARSER_NEEDED;
         return true;

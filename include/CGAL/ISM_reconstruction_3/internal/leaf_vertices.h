@@ -45,6 +45,7 @@ public:
   bool is_leaf(Cell_index) const { return true; }
   Vertex_index vertex(Cell_index c, int i) const { return m_vertices[std::size_t(c)][i]; }
   const std::array<Vertex_index, 4>& vertices(Cell_index c) const { return m_vertices[std::size_t(c)]; }
+  const std::vector<std::array<Vertex_index, 4> >& cells() const { return m_vertices; }
 
 private:
   std::vector<std::array<Vertex_index, 4> > m_vertices;

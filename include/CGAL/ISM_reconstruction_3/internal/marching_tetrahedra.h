@@ -16,11 +16,13 @@
 // 2-manifold as soon as no boundary tetrahedron has a sign change.
 
 #include <CGAL/ISM_reconstruction_3/internal/for_each_index.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 
 #include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -59,6 +61,21 @@ inline bool is_even_permutation(int a, int b, int c, int d)
   return inversions % 2 == 0;
 }
 
+// bit i set: vertex i of `t` is inside (negative)
+template <class Tet>
+int negative_mask(const Tet& t, const std::vector<double>& values)
+{
+  int mask = 0;
+  for(int i = 0; i < 4; ++i)
+  {
+    CGAL_precondition(t[i] >= 0 && static_cast<std::size_t>(t[i]) < values.size());
+    CGAL_precondition(values[static_cast<std::size_t>(t[i])] != 0.);
+    if(values[static_cast<std::size_t>(t[i])] < 0.)
+      mask |= 1 << i;
+  }
+  return mask;
+}
+
 inline double squared_distance(const std::array<double, 3>& p, const std::array<double, 3>& q)
 {
   const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
@@ -73,6 +90,66 @@ struct Linear_crossing
 {
   double operator()(const std::array<double, 3>&, const std::array<double, 3>&, double t) const { return t; }
 };
+
+// The crossed edges of `tets` (see marching_tetrahedra()), sorted and unique, as keys of
+// their sorted vertex pair, and in `points` one point each, at `crossing`'s point. Returns
+// the number of crossed tetrahedra.
+template <class Tets, class Crossing = Linear_crossing>
+std::size_t crossing_points(const std::vector<std::array<double, 3> >& vertices, const Tets& tets,
+                            const std::vector<double>& values, std::vector<std::uint64_t>& keys,
+                            std::vector<std::array<double, 3> >& points, const Crossing& crossing = Crossing())
+{
+  using namespace marching_tetrahedra_detail;
+  static const int edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  keys.clear();
+  std::size_t number_of_crossed_tets = 0;
+  for(const auto& t : tets)
+  {
+    const int mask = negative_mask(t, values);
+    if(mask == 0 || mask == 15)
+      continue;
+    ++number_of_crossed_tets;
+    for(const auto& e : edge_vertices)
+      if(((mask >> e[0]) & 1) != ((mask >> e[1]) & 1))
+        keys.push_back(edge_key(int(t[e[0]]), int(t[e[1]])));
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+
+  points.resize(keys.size());
+  // in parallel: a crossing may fit a quadric to the points near it (100 ms serial at 36k)
+  for_each_index(keys.size(), [&](std::size_t i) {
+    const std::size_t a = static_cast<std::size_t>(keys[i] >> 32);
+    const std::size_t b = static_cast<std::size_t>(keys[i] & 0xFFFFFFFFULL);
+    const double fa = values[a], fb = values[b];
+    double t = fa / (fa - fb);  // opposite signs: the denominator is not zero
+    t = (std::min)((std::max)(t, 0.), 1.);
+    t = crossing(vertices[a], vertices[b], t);
+    for(int k = 0; k < 3; ++k)
+      points[i][k] = vertices[a][k] + t * (vertices[b][k] - vertices[a][k]);
+  });
+  return number_of_crossed_tets;
+}
+
+// The median distance from `points` to the crossings of F's zero level with the edges of
+// `tets` (the vertices of its marching tetrahedra); infinite without one.
+template <class Tets>
+double median_distance_to_crossings(const std::vector<std::array<double, 3> >& points,
+                                    const std::vector<std::array<double, 3> >& vertices, const Tets& tets,
+                                    const std::vector<double>& values)
+{
+  std::vector<std::uint64_t> keys;
+  std::vector<std::array<double, 3> > crossings;
+  crossing_points(vertices, tets, values, keys, crossings);
+  if(crossings.empty() || points.empty()) return HUGE_VAL;
+  const Point_neighbors near(crossings);
+  std::vector<double> distance(points.size());
+  for_each_index(points.size(), [&](std::size_t i) {
+    near.for_nearest(points[i], 1, [&](std::uint32_t, double d2) { distance[i] = std::sqrt(d2); });
+  });
+  std::nth_element(distance.begin(), distance.begin() + std::ptrdiff_t(distance.size() / 2), distance.end());
+  return distance[distance.size() / 2];
+}
 
 // `vertices`: one point per vertex; `tets`: positively oriented tetrahedra
 // (det[p1-p0, p2-p0, p3-p0] > 0); `values`: one per vertex, never 0, negative = inside.
@@ -96,46 +173,9 @@ void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
 
   static const int edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-  auto negative_mask = [&](const std::array<int, 4>& t) {
-    int mask = 0;
-    for(int i = 0; i < 4; ++i)
-    {
-      CGAL_precondition(t[i] >= 0 && static_cast<std::size_t>(t[i]) < values.size());
-      CGAL_precondition(values[static_cast<std::size_t>(t[i])] != 0.);
-      if(values[static_cast<std::size_t>(t[i])] < 0.)
-        mask |= 1 << i;
-    }
-    return mask;
-  };
-
   // 1. The crossed edges, sorted and unique: one output point each.
   std::vector<std::uint64_t> keys;
-  std::size_t number_of_crossed_tets = 0;
-  for(const std::array<int, 4>& t : tets)
-  {
-    const int mask = negative_mask(t);
-    if(mask == 0 || mask == 15)
-      continue;
-    ++number_of_crossed_tets;
-    for(const auto& e : edge_vertices)
-      if(((mask >> e[0]) & 1) != ((mask >> e[1]) & 1))
-        keys.push_back(edge_key(t[e[0]], t[e[1]]));
-  }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-
-  out_points.resize(keys.size());
-  // in parallel: a crossing may fit a quadric to the points near it (100 ms serial at 36k)
-  for_each_index(keys.size(), [&](std::size_t i) {
-    const std::size_t a = static_cast<std::size_t>(keys[i] >> 32);
-    const std::size_t b = static_cast<std::size_t>(keys[i] & 0xFFFFFFFFULL);
-    const double fa = values[a], fb = values[b];
-    double t = fa / (fa - fb);  // opposite signs: the denominator is not zero
-    t = (std::min)((std::max)(t, 0.), 1.);
-    t = crossing(vertices[a], vertices[b], t);
-    for(int k = 0; k < 3; ++k)
-      out_points[i][k] = vertices[a][k] + t * (vertices[b][k] - vertices[a][k]);
-  });
+  const std::size_t number_of_crossed_tets = crossing_points(vertices, tets, values, keys, out_points, crossing);
 
   // 2. The triangles.
   // For a positively oriented tet, if (i, j, k, l) is an even permutation of (0, 1, 2, 3),
@@ -145,7 +185,7 @@ void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
   out_triangles.reserve(2 * number_of_crossed_tets);
   for(const std::array<int, 4>& t : tets)
   {
-    const int mask = negative_mask(t);
+    const int mask = negative_mask(t, values);
     if(mask == 0 || mask == 15)
       continue;
     std::array<std::size_t, 6> point_of_edge;

@@ -12,7 +12,6 @@
 #include <CGAL/ISM_reconstruction_3/internal/ising_annealing.h>
 #include <CGAL/ISM_reconstruction_3/internal/local_fitting.h>
 #include <CGAL/ISM_reconstruction_3/internal/memory_budget.h>
-#include <CGAL/ISM_reconstruction_3/internal/point_neighbors.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/enumerable_thread_specific.h>
@@ -21,7 +20,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -267,32 +265,6 @@ std::size_t number_of_inside_clusters(const Triangulation& tr, const std::vector
   for(std::size_t v = 0; v < signs.size(); ++v)
     if(root[v] == v && signs[v] < 0) ++clusters;
   return clusters;
-}
-
-// The median distance from `points` to the nearest point where a leaf edge changes sign
-// (F's linear crossing: a vertex of the marching tetrahedra), infinite without one.
-template <class Leaves>
-double median_miss(const std::vector<std::array<double, 3> >& points, const Leaves& leaves,
-                   const std::vector<std::array<double, 3> >& xyz, const std::vector<double>& values)
-{
-  static const int edge[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
-  std::vector<std::array<double, 3> > crossings;
-  for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
-    for(const auto& e : edge)
-    {
-      const auto a = leaves.vertex(typename Leaves::Cell_index(c), e[0]), b = leaves.vertex(typename Leaves::Cell_index(c), e[1]);
-      if((values[a] < 0) == (values[b] < 0)) continue;
-      const double t = values[a] / (values[a] - values[b]);
-      crossings.push_back({{ xyz[a][0] + t * (xyz[b][0] - xyz[a][0]), xyz[a][1] + t * (xyz[b][1] - xyz[a][1]),
-                             xyz[a][2] + t * (xyz[b][2] - xyz[a][2]) }});
-    }
-  if(crossings.empty() || points.empty()) return HUGE_VAL;
-  const Point_neighbors near(crossings);
-  std::vector<double> miss(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    near.for_nearest(points[i], 1, [&](std::uint32_t, double d2) { miss[i] = std::sqrt(d2); });
-  std::nth_element(miss.begin(), miss.begin() + std::ptrdiff_t(miss.size() / 2), miss.end());
-  return miss[miss.size() / 2];
 }
 
 // Flips small islands of the in/out labelling: a cluster of inside vertices (connected by
