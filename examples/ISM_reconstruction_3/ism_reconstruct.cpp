@@ -403,7 +403,8 @@ const std::vector<Option>& options()
            [](const Settings& s) { return std::string(s.remove_isolated_points ? "on" : "off"); }},
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
-                       "points (jet smoothing) this many times; 0: never"),
+                       "points (jet smoothing) this many times where they are dense for their noise, "
+                       "else once (more passes flatten thin parts); 0: never"),
     ISM_INTEGER_OPTION("--point-smoothing-neighbors", point_smoothing_neighbors,
                        "nearest points a point's quadric is fitted to; more, up to 64, where the points "
                        "are dense for their noise"),

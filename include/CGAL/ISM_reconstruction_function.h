@@ -517,9 +517,11 @@ private:
        (m_settings.point_smoothing_noise > 0 && !(m_stats.neighborhood_coplanarity > m_settings.point_smoothing_noise)))
       return;  // the tree then serves the distance stage
     if(m_given_points.empty()) m_given_points = m_points;
-    m_stats.number_of_point_smoothing_neighbors = I::smoothing_neighbors_for_noise(
+    const I::Jet_smoothing_plan plan = I::jet_smoothing_plan(
         m_points, *m_point_neighbors, unsigned(m_settings.point_smoothing_neighbors), m_points.size() / 2000);
-    for(int pass = 0; pass < m_settings.point_smoothing_iterations; ++pass)
+    m_stats.number_of_point_smoothing_neighbors = plan.neighbors;
+    const int passes = plan.dense_for_noise ? m_settings.point_smoothing_iterations : 1;
+    for(int pass = 0; pass < passes; ++pass)
     {
       if(pass > 0) m_point_neighbors.reset(new I::Point_neighbors(m_points));
       m_points = I::jet_smoothed(m_points, *m_point_neighbors, m_stats.number_of_point_smoothing_neighbors);

@@ -821,7 +821,8 @@ void point_smoothing_test()
   CHECK(moved < 1e-6, "point smoothing: points on a line stay there, moved " + std::to_string(moved));
 
   // the same noise twenty times denser: the 24 nearest points reach under 2 sigma, so the
-  // jet fits take more; on the 4,000 points (reach about 7 sigma) they stay 24
+  // jet fits take more, and every pass; on the 4,000 points (reach about 7 sigma) they stay
+  // 24, and one pass
   std::vector<Point> dense;
   const int m = 80000;
   for(int i = 0; i < m; ++i)
@@ -830,12 +831,15 @@ void point_smoothing_test()
     dense.push_back({{ s * r * std::cos(phi), s * r * std::sin(phi), s * z }});
   }
   const internal::Point_neighbors dense_neighbors(dense);
-  const unsigned int k_sparse = internal::smoothing_neighbors_for_noise(noisy, noisy_neighbors, 24, noisy.size() / 2000);
-  const unsigned int k_dense = internal::smoothing_neighbors_for_noise(dense, dense_neighbors, 24, dense.size() / 2000);
+  const internal::Jet_smoothing_plan sparse_plan = internal::jet_smoothing_plan(noisy, noisy_neighbors, 24, noisy.size() / 2000);
+  const internal::Jet_smoothing_plan dense_plan = internal::jet_smoothing_plan(dense, dense_neighbors, 24, dense.size() / 2000);
+  const unsigned int k_sparse = sparse_plan.neighbors, k_dense = dense_plan.neighbors;
   std::cout << "  jet neighbours for 2 % noise: " << k_sparse << " at 4,000 points, " << k_dense << " at 80,000" << std::endl;
   CHECK(k_sparse == 24 && k_dense >= 28 && k_dense <= 64,
         "point smoothing: jet neighbours 24 at 4,000 noisy points and 28-64 at 80,000, got " + std::to_string(k_sparse) +
             " and " + std::to_string(k_dense));
+  CHECK(!sparse_plan.dense_for_noise && dense_plan.dense_for_noise,
+        "point smoothing: one pass at 4,000 noisy points, every pass at 80,000");
 }
 
 // The local-plane distance (distance_estimation.h) over a disk of points is the plane's
