@@ -43,6 +43,9 @@ inline std::uint64_t edge_key(int a, int b)
          static_cast<std::uint64_t>(static_cast<std::uint32_t>(b));
 }
 
+// The vertices of a tetrahedron's edge 0..5 (the inverse of local_edge()).
+constexpr int edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
 // Local index (0..5) of the edge {i, j} of a tetrahedron, i != j.
 inline int local_edge(int i, int j)
 {
@@ -100,7 +103,6 @@ std::size_t crossing_points(const std::vector<std::array<double, 3> >& vertices,
                             std::vector<std::array<double, 3> >& points, const Crossing& crossing = Crossing())
 {
   using namespace marching_tetrahedra_detail;
-  static const int edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   keys.clear();
   std::size_t number_of_crossed_tets = 0;
   for(const auto& t : tets)
@@ -171,7 +173,6 @@ void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
   out_points.clear();
   out_triangles.clear();
 
-  static const int edge_vertices[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
   // 1. The crossed edges, sorted and unique: one output point each.
   std::vector<std::uint64_t> keys;
