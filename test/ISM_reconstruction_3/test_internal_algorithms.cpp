@@ -14,6 +14,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/winding_number.h>
 #include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_input.h>
 #include <CGAL/Bisection_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -881,6 +882,35 @@ void add_sphere_points(std::vector<std::array<double, 3> >& points, int n, doubl
   }
 }
 
+// The extent of the points over that of their bulk (point_input.h), from which far outliers
+// and parts far apart add levels: an evenly sampled sphere of any size is its own bulk (a
+// grid too fine for 300 points once split it into groups of a few points, and added 9
+// levels "for far outliers"), while a second sphere or a cluster far away is seen.
+void bulk_extent_test()
+{
+  for(int n : { 120, 300, 800, 2000, 5000, 40000 })
+  {
+    std::vector<std::array<double, 3> > points;
+    add_sphere_points(points, n, 1.);
+    const double ratio = internal::extent_over_bulk_extent(points);
+    CHECK(internal::far_outlier_levels(ratio) == 0,
+          "bulk extent: " << n << " points on a sphere are all bulk, yet the ratio is " << ratio);
+  }
+  for(int n : { 300, 5000 })
+  {
+    std::vector<std::array<double, 3> > points;
+    add_sphere_points(points, n, 1.);
+    std::vector<std::array<double, 3> > two = points;
+    for(std::array<double, 3> p : points) two.push_back({{ p[0] + 100., p[1], p[2] }});
+    const double two_ratio = internal::extent_over_bulk_extent(two);
+    CHECK(two_ratio > 30, "bulk extent: two spheres 100 radii apart (" << n << " points each) give " << two_ratio);
+    // 2 % of the points in a cluster 1000 radii away
+    for(int i = 0; i < n / 50; ++i) points.push_back({{ 1000. + 0.01 * i, 0., 0. }});
+    const double far_ratio = internal::extent_over_bulk_extent(points);
+    CHECK(far_ratio > 300, "bulk extent: a cluster 1000 radii away (" << n << " points) gives " << far_ratio);
+  }
+}
+
 // Jet crossings (jet_crossing.h): F's values are off by up to 80 % (as distance estimates
 // from points a leaf away are); the linear crossings inherit the error,
 // the crossings moved along their edges onto the quadric of the sphere's points must not.
@@ -1395,6 +1425,7 @@ int main()
 
   std::cout << "Distance estimate" << std::endl;
   disk_distance_test();
+  bulk_extent_test();
 
   std::cout << "Tangent-plane signs" << std::endl;
   tangent_plane_test();
