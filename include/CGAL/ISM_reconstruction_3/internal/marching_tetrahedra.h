@@ -173,7 +173,6 @@ void marching_tetrahedra(const std::vector<std::array<double, 3> >& vertices,
   out_points.clear();
   out_triangles.clear();
 
-
   // 1. The crossed edges, sorted and unique: one output point each.
   std::vector<std::uint64_t> keys;
   const std::size_t number_of_crossed_tets = crossing_points(vertices, tets, values, keys, out_points, crossing);
