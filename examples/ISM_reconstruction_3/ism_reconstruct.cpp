@@ -639,6 +639,7 @@ private:
 struct Topology
 {
   std::size_t components = 0, boundary_cycles = 0;
+  std::size_t largest_component_faces = 0;
   long euler = 0;
   long genus = 0;
   bool closed = false, manifold = false;
@@ -657,6 +658,9 @@ Topology topology(Mesh& mesh)
   t.euler = long(num_vertices(mesh) - isolated) - long(num_edges(mesh)) + long(num_faces(mesh));
   auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:ism_cc", 0).first;
   t.components = PMP::connected_components(mesh, fcc);
+  std::vector<std::size_t> faces_of(t.components, 0);
+  for(auto f : faces(mesh)) ++faces_of[fcc[f]];
+  if(!faces_of.empty()) t.largest_component_faces = *std::max_element(faces_of.begin(), faces_of.end());
   std::vector<Mesh::Halfedge_index> cycles;
   PMP::extract_boundary_cycles(mesh, std::back_inserter(cycles));
   t.boundary_cycles = cycles.size();
@@ -825,8 +829,31 @@ int run(int argc, char** argv)
               << function->settings().min_points_per_cell
               << " points; the surface comes from the points' tangent planes alone and may be in parts or "
                  "lumpy: sample the surface more densely\n";
-  if(cl.quiet) return SUCCESS;
+  // Both sides of a part thinner than about two point spacings fall in the same leaves, and
+  // no vertex lies between them: the surface misses the part's points (random points on an
+  // ellipsoid of axes 1, 1, 0.01: 58 % of them off the surface, in 35 pieces), or runs
+  // along them in many small pieces (evenly spread points on it: 66-310 components, none
+  // off). Measured over 30 closed meshes of libcgal-demo (36,000 points each), the bunny
+  // with noise, outliers and one half sparser: at most 2.2 % off, one component except
+  // knot2 (2); a thin plate's points had come out in 125 pieces without a word. Points on
+  // 20 great circles of a sphere (scan lines far apart): 52 % off.
   const Topology topo = topology(mesh);
+  const double off_surface = double(stats.number_of_points_off_surface) / double(stats.number_of_points);
+  const bool in_pieces = topo.components >= 10 && 2 * topo.largest_component_faces < num_faces(mesh);
+  if(off_surface > 0.1 || in_pieces)
+  {
+    std::ostringstream why;
+    if(off_surface > 0.1)
+      why << std::lround(100 * off_surface) << " % of the points lie in leaves the surface does not reach";
+    else
+      why << "the surface fell into " << topo.components << " pieces, the largest with "
+          << std::lround(100. * double(topo.largest_component_faces) / double(num_faces(mesh))) << " % of the faces";
+    std::cerr << "ism_reconstruct: warning: " << why.str()
+              << ": the points may be too sparse for the object (parts thinner than about two point "
+                 "spacings, where no cell fits between their sides, or wide gaps between lines of points); "
+                 "sample it more densely\n";
+  }
+  if(cl.quiet) return SUCCESS;
   auto yes = [](bool b) { return b ? "yes" : "no"; };
   std::ostringstream os;
   os << std::fixed << std::setprecision(3);

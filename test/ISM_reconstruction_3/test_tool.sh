@@ -186,6 +186,25 @@ for flag in --no-clamp --paper; do
   }
 done
 
+# a pancake (ellipsoid of axes 1, 1, 0.02 or 0.01) whose sides are closer than about two
+# point spacings: the surface misses most random points on it, or falls into pieces along
+# evenly spread ones; either way a warning, also with --quiet (a thin plate's points came
+# out in 125 pieces without a word)
+awk 'BEGIN { srand(11); for (i = 0; i < 10000; ++i) { do { x = 2 * rand() - 1; y = 2 * rand() - 1; z = 2 * rand() - 1
+               r = x * x + y * y + z * z } while (r > 1 || r < 1e-6)
+             r = sqrt(r); printf "%.9f %.9f %.9f\n", x / r, y / r, 0.02 * z / r } }' >pancake_random.xyz
+awk 'BEGIN { for (i = 0; i < 10000; ++i) { z = 1 - 2 * (i + 0.5) / 10000; r = sqrt(1 - z * z); a = 2.399963 * i
+             printf "%.9f %.9f %.9f\n", r * cos(a), r * sin(a), 0.01 * z } }' >pancake_even.xyz
+for case in "pancake_random % of the points lie in leaves the surface does not reach" \
+            "pancake_even the surface fell into [0-9]* pieces"; do
+  name=${case%% *} words=${case#* }
+  run "$name" 0 --quiet "$name.xyz" "$name.off" && {
+    grep -q "warning: [0-9]* \?$words.*: the points may be too sparse.*thinner than about two point spacings" "$name.err" ||
+      fail "$name: no warning of a part too thin: $(head -c 300 "$name.err")"
+    pass "$name: $(head -c 100 "$name.err")..."
+  }
+done
+
 # ---------------------------------------------------------------------------------------
 # 2. bad input: exit 1, the file (and the line) named, no output left
 # ---------------------------------------------------------------------------------------
