@@ -343,10 +343,7 @@ private:
     CGAL::Real_timer step;
     step.start();
 #endif
-    std::vector<char> near_surface(m_sign.size(), 0);
-    for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
-      if(ISM_reconstruction_3::internal::is_crossed(leaves.vertices(Cell_index(c)), m_sign))
-        for(int l = 0; l < 4; ++l) near_surface[leaves.vertex(Cell_index(c), l)] = 1;
+    const std::vector<char> near_surface = ISM_reconstruction_3::internal::crossed_leaf_vertices(leaves, m_sign);
     // one kd-tree of the points serves the distances and the tangent planes
     if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
     const ISM_reconstruction_3::internal::Point_neighbors& neighbors = *m_point_neighbors;
@@ -725,10 +722,7 @@ private:
   // of slack: noise puts points a little off the surface, in the leaf next to it).
   std::size_t count_points_off_surface(const Leaf_vertices& leaves) const
   {
-    std::vector<char> on_surface(m_sign.size(), 0);
-    for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
-      if(ISM_reconstruction_3::internal::is_crossed(leaves.vertices(Cell_index(c)), m_sign))
-        for(int l = 0; l < 4; ++l) on_surface[leaves.vertex(Cell_index(c), l)] = 1;
+    const std::vector<char> on_surface = ISM_reconstruction_3::internal::crossed_leaf_vertices(leaves, m_sign);
     std::size_t off = 0;
     for(std::uint32_t i = 0; i < m_points.size(); ++i)
     {

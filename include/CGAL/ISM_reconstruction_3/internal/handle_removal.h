@@ -28,6 +28,20 @@ bool is_crossed(const Vertices& v, const std::vector<signed char>& signs)
   return signs[v[0]] != signs[v[1]] || signs[v[0]] != signs[v[2]] || signs[v[0]] != signs[v[3]];
 }
 
+// Per vertex, 1 if it is a vertex of a leaf the surface crosses.
+template <class Leaves>
+std::vector<char> crossed_leaf_vertices(const Leaves& leaves, const std::vector<signed char>& signs)
+{
+  std::vector<char> on_crossed(signs.size(), 0);
+  for(std::size_t c = 0; c < leaves.number_of_cells(); ++c)
+  {
+    const auto& v = leaves.vertices(typename Leaves::Cell_index(c));
+    if(is_crossed(v, signs))
+      for(int l = 0; l < 4; ++l) on_crossed[v[l]] = 1;
+  }
+  return on_crossed;
+}
+
 // The vertices of the leaves the surface crosses that are `wanted` and not `tested` yet,
 // marked tested: one round of the passes that re-sign the surface's vertices and then test
 // the vertices their changes expose.
