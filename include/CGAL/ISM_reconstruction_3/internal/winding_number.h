@@ -41,7 +41,15 @@ namespace internal {
 
 // Barnes-Hut evaluation of w: an octree of the points whose nodes keep the area-weighted
 // centroid, the summed dipole sum a_i n_i and the radius about the centroid; a node seen
-// from farther than `opening` times its radius counts as one dipole.
+// from farther than `opening` times its radius counts as one dipole. Its error falls only
+// as the node's radius over the distance: against the direct sum at 3,000 points 0.005-0.035
+// from the bunny's noisy points (36k, 0.5 % of the diagonal), median 0.019, 99th percentile
+// 0.061, largest 0.12 with `opening` 2; 0.003, 0.007 and 0.011 with 5 (7.5 instead of 1.8
+// microseconds an evaluation). The thresholds of Winding_number_rule were chosen with 2, and
+// with 5 the bar moved as a reshuffle (session 45: the bunny's vertices at 0.5 % noise 51 ->
+// 53 of 60, one half ten times sparser 12 -> 14 misses over seeds 21-294, the rest and the
+// survey unchanged): vertices with w at a threshold's edge (0.19 / 0.20 against `low` 0.2)
+// went either way.
 class Winding_number
 {
 public:
