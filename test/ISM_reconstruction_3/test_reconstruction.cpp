@@ -251,19 +251,25 @@ int main(int argc, char** argv)
     // samplings (the Ising signs saw no inside, or one vertex, with leaves of 6 points); the
     // coarser refinements (leaves of 12, then 24 points) must give one closed sphere whose
     // inside the signs saw, and must have run
+    // n random points on the unit sphere, z scaled by `flatness` (an ellipsoid)
+    const auto random_sphere_points = [](std::mt19937& random, std::normal_distribution<double>& normal, int n,
+                                         double flatness) {
+      std::vector<Point_3> points;
+      for(int i = 0; i < n; ++i)
+      {
+        const double x = normal(random), y = normal(random), z = normal(random);
+        const double r = std::sqrt(x * x + y * y + z * z);
+        points.push_back(Point_3(x / r, y / r, flatness * z / r));
+      }
+      return points;
+    };
     {
       std::mt19937 random(42);
       std::normal_distribution<double> normal;
       std::size_t coarser = 0;
       for(int sampling = 0; sampling < 6; ++sampling)
       {
-        std::vector<Point_3> few;
-        for(int i = 0; i < 250; ++i)
-        {
-          const double x = normal(random), y = normal(random), z = normal(random);
-          const double r = std::sqrt(x * x + y * y + z * z);
-          few.push_back(Point_3(x / r, y / r, z / r));
-        }
+        const std::vector<Point_3> few = random_sphere_points(random, normal, 250, 1.);
         CGAL::ISM_reconstruction_function<K> g(few);
         g.compute_implicit_function();
         Mesh m;
@@ -286,13 +292,7 @@ int main(int argc, char** argv)
       double off_fraction[2] = {0, 0};
       for(int flat = 0; flat < 2; ++flat)
       {
-        std::vector<Point_3> points;
-        for(int i = 0; i < 10000; ++i)
-        {
-          const double x = normal(random), y = normal(random), z = normal(random);
-          const double r = std::sqrt(x * x + y * y + z * z);
-          points.push_back(Point_3(x / r, y / r, (flat ? 0.02 : 1.) * z / r));
-        }
+        const std::vector<Point_3> points = random_sphere_points(random, normal, 10000, flat ? 0.02 : 1.);
         CGAL::ISM_reconstruction_function<K> g(points);
         g.compute_implicit_function();
         off_fraction[flat] = double(g.statistics().number_of_points_off_surface) / double(points.size());
