@@ -839,11 +839,12 @@ int run(int argc, char** argv)
   // 20 great circles of a sphere (scan lines far apart): 52 % off.
   const Topology topo = topology(mesh);
   const double off_surface = double(stats.number_of_points_off_surface) / double(stats.number_of_points);
+  const bool missed = off_surface > 0.1;
   const bool in_pieces = topo.components >= 10 && 2 * topo.largest_component_faces < num_faces(mesh);
-  if(off_surface > 0.1 || in_pieces)
+  if(missed || in_pieces)
   {
     std::ostringstream why;
-    if(off_surface > 0.1)
+    if(missed)
       why << std::lround(100 * off_surface) << " % of the points lie in leaves the surface does not reach";
     else
       why << "the surface fell into " << topo.components << " pieces, the largest with "

@@ -247,10 +247,6 @@ int main(int argc, char** argv)
                 throws_logic_error([&] { Mesh m; ISM::extract_surface(thrown, m, 0, 0.5, -0.53); }),
             "thrown: not computed, +1 everywhere, extract_surface() throws std::logic_error");
     }
-    // few points: random spheres of 250 points came out in 2 to 10 parts on 10 of 10
-    // samplings (the Ising signs saw no inside, or one vertex, with leaves of 6 points); the
-    // coarser refinements (leaves of 12, then 24 points) must give one closed sphere whose
-    // inside the signs saw, and must have run
     // n random points on the unit sphere, z scaled by `flatness` (an ellipsoid)
     const auto random_sphere_points = [](std::mt19937& random, std::normal_distribution<double>& normal, int n,
                                          double flatness) {
@@ -263,6 +259,10 @@ int main(int argc, char** argv)
       }
       return points;
     };
+    // few points: random spheres of 250 points came out in 2 to 10 parts on 10 of 10
+    // samplings (the Ising signs saw no inside, or one vertex, with leaves of 6 points); the
+    // coarser refinements (leaves of 12, then 24 points) must give one closed sphere whose
+    // inside the signs saw, and must have run
     {
       std::mt19937 random(42);
       std::normal_distribution<double> normal;
