@@ -396,11 +396,17 @@ const std::vector<Option>& options()
            "outside vertices (a part cut off at a neck too thin for the leaves)",
            [](Settings& s, const std::string&, const std::string&) { s.join_islands = false; },
            [](const Settings& s) { return std::string(s.join_islands ? "on" : "off"); }},
+    Option{"--keep-point-clusters", "merge_point_clusters", nullptr,
+           "do not replace, first of all, the clusters of copies of the points by their centroids where most "
+           "points have a few copies far closer to them than the next points (several scans along the same "
+           "beams, points written again with rounding)",
+           [](Settings& s, const std::string&, const std::string&) { s.merge_point_clusters = false; },
+           [](const Settings& s) { return std::string(s.merge_point_clusters ? "merged" : "kept"); }},
     Option{"--keep-isolated-points", "remove_isolated_points", nullptr,
            "do not leave out, first, the points whose 12 nearest points spread more than 20 times "
            "farther than the median point's (stray returns far from the surface)",
            [](Settings& s, const std::string&, const std::string&) { s.remove_isolated_points = false; },
-           [](const Settings& s) { return std::string(s.remove_isolated_points ? "on" : "off"); }},
+           [](const Settings& s) { return std::string(s.remove_isolated_points ? "left out" : "kept"); }},
     ISM_INTEGER_OPTION("--point-smoothing-iterations", point_smoothing_iterations,
                        "before the refinement, move noisy points onto a quadric fitted to their nearest "
                        "points (jet smoothing) this many times where they are dense for their noise, "
@@ -838,7 +844,8 @@ int run(int argc, char** argv)
   // knot2 (2); a thin plate's points had come out in 125 pieces without a word. Points on
   // 20 great circles of a sphere (scan lines far apart): 52 % off.
   const Topology topo = topology(mesh);
-  const double off_surface = double(stats.number_of_points_off_surface) / double(stats.number_of_points);
+  const double off_surface = double(stats.number_of_points_off_surface) /
+                             double(stats.number_of_points - stats.number_of_merged_points - stats.number_of_isolated_points);
   const bool missed = off_surface > 0.1;
   const bool in_pieces = topo.components >= 10 && 2 * topo.largest_component_faces < num_faces(mesh);
   if(missed || in_pieces)
@@ -859,6 +866,9 @@ int run(int argc, char** argv)
   std::ostringstream os;
   os << std::fixed << std::setprecision(3);
   os << "input:       " << cl.input << " (" << stats.number_of_points << " points"
+     << (stats.number_of_merged_points > 0
+             ? ", " + std::to_string(stats.number_of_merged_points) + " merged into the centroids of their clusters of copies"
+             : std::string())
      << (stats.number_of_isolated_points > 0
              ? ", " + std::to_string(stats.number_of_isolated_points) + " isolated ones left out"
              : std::string())

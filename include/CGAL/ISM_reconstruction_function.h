@@ -21,6 +21,7 @@
 #include <CGAL/ISM_reconstruction_3/internal/normalization.h>
 #include <CGAL/ISM_reconstruction_3/internal/island_joining.h>
 #include <CGAL/ISM_reconstruction_3/internal/isolated_points.h>
+#include <CGAL/ISM_reconstruction_3/internal/point_clusters.h>
 #include <CGAL/ISM_reconstruction_3/internal/normal_orientation.h>
 #include <CGAL/ISM_reconstruction_3/internal/leaf_vertices.h>
 #include <CGAL/ISM_reconstruction_3/internal/marching_tetrahedra.h>
@@ -121,6 +122,8 @@ public:
   {
     double refinement_time = 0, topology_time = 0, distance_time = 0;
     std::size_t number_of_points = 0, number_of_leaves = 0, number_of_vertices = 0;
+    /// points taken away by replacing clusters of copies with their centroids (`merge_point_clusters`)
+    std::size_t number_of_merged_points = 0;
     std::size_t number_of_isolated_points = 0;  ///< points left out: their 12 nearest points spread more than 20 times farther than the median point's (stray returns far from the surface)
     /// points in a leaf none of whose vertices is a vertex of a leaf the surface crosses: the
     /// surface does not reach them. A few are outliers (1 % outliers in the bunny's box: 0.7 %
@@ -306,6 +309,7 @@ private:
     m_stats.number_of_points = m_points.size();
     CGAL::Real_timer timer;
     timer.start();
+    if(m_settings.merge_point_clusters) merge_point_clusters();
     if(m_settings.remove_isolated_points) remove_isolated_points();
     // one tree of the points for the sheet test, the noise measure and the smoothing
     if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
@@ -468,8 +472,9 @@ public:
   const Statistics& statistics() const { return m_stats; }
   /// the parameters of the last run
   const Settings& settings() const { return m_settings; }
-  /// the input points (as doubles, sorted, exact duplicates removed), after the point
-  /// smoothing if the last computation found them noisy (`point_smoothing_iterations`)
+  /// the input points (as doubles, sorted, exact duplicates removed) as the last computation
+  /// used them: clusters of copies merged (`merge_point_clusters`), isolated points left out
+  /// (`remove_isolated_points`), smoothed if it found them noisy (`point_smoothing_iterations`)
   const std::vector<std::array<double, 3> >& input_points() const { return m_points; }
   /// @}
 
@@ -484,27 +489,46 @@ private:
   void remove_isolated_points()
   {
     namespace I = ISM_reconstruction_3::internal;
-    m_point_neighbors.reset(new I::Point_neighbors(m_points));
+    if(!m_point_neighbors) m_point_neighbors.reset(new I::Point_neighbors(m_points));
     const std::vector<char> isolated = I::isolated_points(m_points, *m_point_neighbors);
     m_stats.number_of_isolated_points = std::size_t(std::count(isolated.begin(), isolated.end(), 1));
     if(m_stats.number_of_isolated_points == 0) return;  // the tree serves the next stages
-    m_given_points = m_points;
+    if(m_given_points.empty()) m_given_points = m_points;
     std::size_t kept = 0;
     for(std::size_t i = 0; i < m_points.size(); ++i)
       if(!isolated[i]) m_points[kept++] = m_points[i];
     m_points.resize(kept);
-    // what is left must still bound a volume (a dense line among sparse points would not)
+    check_points_left(std::to_string(m_stats.number_of_isolated_points) +
+                      " isolated points are left out (remove_isolated_points(false) keeps them)");
+  }
+
+  // point_clusters.h says why
+  void merge_point_clusters()
+  {
+    namespace I = ISM_reconstruction_3::internal;
+    m_point_neighbors.reset(new I::Point_neighbors(m_points));
+    std::vector<Xyz> merged = I::merged_point_clusters(m_points, *m_point_neighbors);
+    if(merged.empty()) return;  // the tree serves the next stages
+    m_stats.number_of_merged_points = m_points.size() - merged.size();
+    m_given_points.swap(m_points);
+    m_points.swap(merged);
+    check_points_left("clusters of copies are merged into " + std::to_string(m_points.size()) +
+                      " points (merge_point_clusters(false) keeps them)");
+  }
+
+  // After points were left out or merged, what is left must still bound a volume (a dense
+  // line among sparse points would not); the tree of the points is built again.
+  void check_points_left(const std::string& what)
+  {
     try
     {
-      I::check_point_set(m_points);
+      ISM_reconstruction_3::internal::check_point_set(m_points);
     }
     catch(const std::invalid_argument& e)
     {
-      throw std::runtime_error(std::string(e.what()) + ", once the " +
-                               std::to_string(m_stats.number_of_isolated_points) +
-                               " isolated points are left out (remove_isolated_points(false) keeps them)");
+      throw std::runtime_error(std::string(e.what()) + ", once the " + what);
     }
-    m_point_neighbors.reset(new I::Point_neighbors(m_points));
+    m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
   }
 
   // Noisy points tilt the planes of the small cells (point_smoothing.h says why): they are

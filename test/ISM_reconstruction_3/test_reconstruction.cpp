@@ -296,11 +296,36 @@ int main(int argc, char** argv)
         CGAL::ISM_reconstruction_function<K> g(points);
         g.compute_implicit_function();
         off_fraction[flat] = double(g.statistics().number_of_points_off_surface) / double(points.size());
+        CHECK(g.statistics().number_of_merged_points == 0, "random points without copies: none merged");
       }
       std::cout << "points off the surface: sphere " << off_fraction[0] << ", pancake " << off_fraction[1] << "\n";
       CHECK(off_fraction[0] < 0.01 && off_fraction[1] > 0.1,
             "points off the surface: under 1 % on a sphere of 10,000 random points, over 10 % on an ellipsoid of axes "
             "1, 1, 0.02 (" + std::to_string(off_fraction[0]) + ", " + std::to_string(off_fraction[1]) + ")");
+    }
+    // clusters of copies (several scans along the same beams): 3,000 random directions on a
+    // sphere, each 8 times with radial noise 1e-4, came out in hundreds of pieces before
+    // merge_point_clusters; merged, one sphere, as the points taken once
+    {
+      std::mt19937 random(11);
+      std::normal_distribution<double> normal;
+      const std::vector<Point_3> directions = random_sphere_points(random, normal, 3000, 1.);
+      std::vector<Point_3> copies;
+      for(const Point_3& d : directions)
+        for(int copy = 0; copy < 8; ++copy)
+          copies.push_back(CGAL::ORIGIN + (1 + 1e-4 * normal(random)) * (d - CGAL::ORIGIN));
+      CGAL::ISM_reconstruction_function<K> g(copies);
+      g.compute_implicit_function();
+      Mesh m;
+      ISM::extract_surface(g, m, 0, 0.5, -0.53);
+      const Topology t = topology(m);
+      double worst = 0;
+      for(auto v : vertices(m)) worst = (std::max)(worst, std::abs(std::sqrt((m.point(v) - CGAL::ORIGIN).squared_length()) - 1));
+      const std::size_t merged = g.statistics().number_of_merged_points;
+      CHECK(t.closed && t.manifold && t.components == 1 && t.genus == 0 && worst < 0.05 && merged >= 20000 && merged <= 21000,
+            "3,000 points 8 times each with radial noise 1e-4: one sphere (components " + std::to_string(t.components) +
+                ", genus " + std::to_string(t.genus) + ", farthest vertex " + std::to_string(worst) + " off the sphere, " +
+                std::to_string(merged) + " points merged, 21,000 copies)");
     }
     // extract_surface()'s arguments are checked as the named parameters they mirror; the
     // defaults' Taubin filter, 1.00085 at its peak, inflated a sphere to 126 times its radius

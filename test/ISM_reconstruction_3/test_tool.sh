@@ -12,9 +12,10 @@
 #   long output name are accepted;
 # - an output that is a directory, or a stdout that cannot be written, exits 1;
 # - unknown options, missing or malformed values and out-of-range parameters exit 2;
-# - --help exits 0 and lists every option with its default.
+# - --help exits 0 and lists every option with its default; the tool's manual names each.
 set -u
 tool=$1 sampler=$2 meshes=$3 work=$4
+tool_doc=$(cd "$(dirname "$0")/../../doc/ISM_reconstruction_3" && pwd)/tool_and_examples.md
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 
 failures=0 block_failures=0
@@ -413,6 +414,10 @@ if run help 0 --help; then
   done
   grep -Eq -- "^ -h, --help\b" help.records || fail "help: --help is not listed"
   grep -q "nearest-squared|nearest|plane" help.out || fail "help: the --distance choices are not listed"
+  # the manual names every option (--keep-isolated-points had been left out of it)
+  for flag in $(grep -Eo -- '^  --[a-z-]+' help.out); do
+    grep -q -- "\`$flag" "$tool_doc" || fail "help: $flag is not in $tool_doc"
+  done
   pass "--help lists every option with its default"
 fi
 

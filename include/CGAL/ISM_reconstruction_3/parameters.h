@@ -70,6 +70,7 @@ enum join_islands_t { join_islands };
 enum sparse_cell_planes_t { sparse_cell_planes };
 enum coarser_refinements_t { coarser_refinements };
 enum remove_isolated_points_t { remove_isolated_points };
+enum merge_point_clusters_t { merge_point_clusters };
 
 } // namespace internal_np
 } // namespace ISM_reconstruction_3
@@ -123,6 +124,7 @@ CGAL_ISM_ADD_NAMED_PARAMETER(join_islands)
 CGAL_ISM_ADD_NAMED_PARAMETER(sparse_cell_planes)
 CGAL_ISM_ADD_NAMED_PARAMETER(coarser_refinements)
 CGAL_ISM_ADD_NAMED_PARAMETER(remove_isolated_points)
+CGAL_ISM_ADD_NAMED_PARAMETER(merge_point_clusters)
 /// \endcond
 
 #undef CGAL_ISM_ADD_NAMED_PARAMETER

@@ -90,6 +90,10 @@ struct Settings
   /*! first, the points whose 12 nearest points spread more than 20 times farther than the median point's are left
       out (stray returns far from the surface); false: never (the paper) */
   bool remove_isolated_points = true;
+  /*! first of all, if most points have a few copies far closer to them than the next points (several scans
+      along the same beams, points written again with rounding), each such cluster is replaced by its centroid;
+      false: never (the paper) */
+  bool merge_point_clusters = true;
   /*! before the refinement, noisy points (see `point_smoothing_noise`) are moved onto a quadric fitted to their
       `point_smoothing_neighbors` nearest points (jet smoothing), this many times; 0: never (the paper) */
   int point_smoothing_iterations = 3;
@@ -122,6 +126,7 @@ struct Settings
     s.winding_number_signs = false;
     s.join_islands = false;
     s.remove_isolated_points = false;
+    s.merge_point_clusters = false;
     s.point_smoothing_iterations = 0;
     s.smoothing_iterations = 3;
     s.crossing_neighbors = 0;
@@ -278,6 +283,7 @@ Settings settings_from_parameters(const NamedParameters& np)
   s.sparse_cell_planes = choose_parameter(get_parameter(np, inp::sparse_cell_planes), d.sparse_cell_planes);
   s.coarser_refinements = internal::integer_parameter(get_parameter(np, inp::coarser_refinements), d.coarser_refinements, "coarser_refinements");
   s.remove_isolated_points = choose_parameter(get_parameter(np, inp::remove_isolated_points), d.remove_isolated_points);
+  s.merge_point_clusters = choose_parameter(get_parameter(np, inp::merge_point_clusters), d.merge_point_clusters);
   s.point_smoothing_iterations = internal::integer_parameter(get_parameter(np, inp::point_smoothing_iterations), d.point_smoothing_iterations, "point_smoothing_iterations");
   s.point_smoothing_neighbors = internal::integer_parameter(get_parameter(np, inp::point_smoothing_neighbors), d.point_smoothing_neighbors, "point_smoothing_neighbors");
   s.point_smoothing_noise = choose_parameter(get_parameter(np, inp::point_smoothing_noise), d.point_smoothing_noise);
