@@ -90,7 +90,8 @@ std::string format_double(double v)
 }
 
 // ---------------------------------------------------------------------------------------
-// Temporary output files: removed at exit or on SIGINT/SIGTERM unless renamed into place.
+// Temporary output files: removed at exit or on a signal that ends the run (SIGINT, SIGTERM,
+// SIGHUP when the terminal closes, SIGQUIT, SIGPIPE) unless renamed into place.
 // ---------------------------------------------------------------------------------------
 
 const int max_temporaries = 4;
@@ -143,23 +144,29 @@ void register_temporary(const std::string& path)
 
 // An output that cannot be renamed into place (a directory of that name, a name too long)
 // is reported before the reconstruction runs rather than after. lstat, as rename replaces
-// a symbolic link rather than what it points to.
-void check_output_name(const std::string& final_name)
+// a symbolic link rather than what it points to. An output that is the input would replace
+// the points by the surface: refused too (it had been done without a word).
+void check_output_name(const std::string& final_name, const std::string& input)
 {
-  struct stat st;
+  struct stat st, in;
   if(::lstat(final_name.c_str(), &st) == 0)
   {
     if(S_ISDIR(st.st_mode)) input_error("cannot write '" + final_name + "': it is a directory");
+    if(::lstat(input.c_str(), &in) == 0 && st.st_dev == in.st_dev && st.st_ino == in.st_ino)
+      input_error("cannot write '" + final_name + "': it is the input file");
   }
   else if(errno != ENOENT)
     input_error("cannot write '" + final_name + "': " + std::strerror(errno));
 }
 
+// the .sol file of the fields beside `name`.mesh
+std::string sol_name(const std::string& mesh_name) { return mesh_name.substr(0, mesh_name.size() - 4) + "sol"; }
+
 // Creates (empty) the temporary file, so that an unwritable directory is reported before
 // the reconstruction runs rather than after.
-void create_temporary(const std::string& temporary, const std::string& final_name)
+void create_temporary(const std::string& temporary, const std::string& final_name, const std::string& input)
 {
-  check_output_name(final_name);
+  check_output_name(final_name, input);
   register_temporary(temporary);
   std::ofstream os(temporary);
   if(!os)
@@ -693,14 +700,17 @@ int run(int argc, char** argv)
   const std::string out_ext = ism_tool::lowercase_extension(cl.output);
   const std::string out_tmp = temporary_name(cl.output, out_ext);
   std::string tets_ext, tets_tmp;
-  create_temporary(out_tmp, cl.output);
+  create_temporary(out_tmp, cl.output, cl.input);
   if(!cl.tets.empty())
   {
     tets_ext = ism_tool::lowercase_extension(cl.tets);
     tets_tmp = temporary_name(cl.tets, tets_ext);
-    create_temporary(tets_tmp, cl.tets);
+    create_temporary(tets_tmp, cl.tets, cl.input);
     if(tets_ext == "mesh")  // the fields go to the .sol file beside the .mesh
-      register_temporary(tets_tmp.substr(0, tets_tmp.size() - 4) + "sol");
+    {
+      check_output_name(sol_name(cl.tets), cl.input);
+      register_temporary(sol_name(tets_tmp));
+    }
   }
 
   CGAL::Real_timer timer;
@@ -810,8 +820,7 @@ int run(int argc, char** argv)
   {
     if(tets_ext == "mesh")
     {
-      const std::string sol = cl.tets.substr(0, cl.tets.size() - 4) + "sol";
-      rename_into_place(tets_tmp.substr(0, tets_tmp.size() - 4) + "sol", sol);
+      rename_into_place(sol_name(tets_tmp), sol_name(cl.tets));
     }
     rename_into_place(tets_tmp, cl.tets);
   }
@@ -921,8 +930,7 @@ int main(int argc, char** argv)
   // 209 MB, 4 MB: 234 MB), user time unchanged within the noise.
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  for(int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) std::signal(sig, on_signal);
   int code = SUCCESS;
   try
   {

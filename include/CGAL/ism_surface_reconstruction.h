@@ -336,7 +336,7 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_lambda}
       \cgalParamDescription{Taubin's lambda, the smoothing factor}
-      \cgalParamType{`double`, in [-1, 1], and with `smoothing_mu` a filter whose gain |(1 - lambda k)(1 - mu k)| stays below 1.01 for k in [0, 2] (else it diverges: lambda = 1 with the default mu is refused)}
+      \cgalParamType{`double`, in [-1, 1], and with `smoothing_mu` a filter whose gain |(1 - lambda k)(1 - mu k)| stays below 1.01 for k in [0, 2] (else it diverges: lambda = 1 with the default mu is refused) and with 0 < lambda < -mu (else every frequency shrinks, the shape's too: lambda = mu = 1 made the bunny a point), checked when `smoothing_iterations` > 0}
       \cgalParamDefault{`0.5`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing_mu}

@@ -1168,6 +1168,13 @@ std::vector<Case> corpus_cases()
   ISM_PARAM_CASE("smoothing_mu_nan", ERROR, params::smoothing_mu(NaN));
   ISM_PARAM_CASE("smoothing_mu_-2", ERROR, params::smoothing_mu(-2.));
   ISM_PARAM_CASE("smoothing_mu_1", ANY, params::smoothing_mu(1.));
+  // Laplacian steps without the inflating one, or with the sign of mu mistyped, shrink
+  ISM_PARAM_CASE("smoothing_shrinking_1_1_x10000", ERROR,
+                 params::smoothing_lambda(1., params::smoothing_mu(1., params::smoothing_iterations(10000u))));
+  ISM_PARAM_CASE("smoothing_shrinking_0.5_0.53_x3", ERROR,
+                 params::smoothing_mu(0.53, params::smoothing_iterations(3u)));
+  ISM_PARAM_CASE("smoothing_shrinking_0.5_0_x3", ERROR,
+                 params::smoothing_mu(0., params::smoothing_iterations(3u)));
   ISM_PARAM_CASE("smoothing_unstable_1_-1_x10000", ERROR,
                  params::smoothing_lambda(1., params::smoothing_mu(-1., params::smoothing_iterations(10000u))));
   ISM_PARAM_CASE("box_margin_0", ERROR, params::box_margin(0.));

@@ -10,9 +10,10 @@
 #   a message naming the file (and the line for text formats), leaving no output file;
 # - a byte-order mark, extra columns, more records than a header announces (a warning) and a
 #   long output name are accepted;
-# - an output that is a directory, or a stdout that cannot be written, exits 1;
+# - an output that is a directory or the input, or a stdout that cannot be written, exits 1;
 # - unknown options, missing or malformed values and out-of-range parameters exit 2;
 # - --help exits 0 and lists every option with its default; the tool's manual names each.
+# - a run ended by a signal (HUP, INT, QUIT, TERM, PIPE) leaves no output and no temporary file.
 set -u
 tool=$1 sampler=$2 meshes=$3 work=$4
 tool_doc=$(cd "$(dirname "$0")/../../doc/ISM_reconstruction_3" && pwd)/tool_and_examples.md
@@ -332,8 +333,10 @@ if run unwritable 1 sphere.xyz no_such_dir/out.off; then
 fi
 # an output that is a directory only failed at the final rename ("Is a directory"), after
 # the work; the check before it says "it is a directory"
-mkdir -p directory.off directory.vtu
-for args in "sphere.xyz directory.off" "sphere.xyz dir_tets.off --tets directory.vtu"; do
+# (the .sol of a .mesh too)
+mkdir -p directory.off directory.vtu directory.sol
+for args in "sphere.xyz directory.off" "sphere.xyz dir_tets.off --tets directory.vtu" \
+            "sphere.xyz dir_tets.off --tets directory.mesh"; do
   name=directory_${args##*.}
   if run "$name" 1 $args; then
     says "$name" "it is a directory"
@@ -342,6 +345,14 @@ for args in "sphere.xyz directory.off" "sphere.xyz dir_tets.off --tets directory
     pass "$name: $(head -1 "$name.err")"
   fi
 done
+# an output that is the input replaced the points by the surface without a word
+cp "$meshes/sphere.off" same.off
+if run same_file 1 same.off same.off; then
+  says same_file "it is the input file"
+  cmp -s same.off "$meshes/sphere.off" || fail "same_file: the input was changed"
+  no_leftovers same_file
+  pass "same_file: $(head -1 same_file.err)"
+fi
 # a summary lost on a full disk exited 0
 if [ -w /dev/full ]; then
   block_failures=$failures
@@ -420,6 +431,24 @@ if run help 0 --help; then
   done
   pass "--help lists every option with its default"
 fi
+
+# ---------------------------------------------------------------------------------------
+# 5. a run ended by a signal leaves no output and no temporary file (SIGHUP, SIGQUIT and
+#    SIGPIPE had left the empty temporaries of the outputs)
+# ---------------------------------------------------------------------------------------
+block_failures=$failures
+for sig in HUP INT QUIT TERM PIPE; do
+  (ulimit -c 0; exec "$tool" --quiet --sweeps 100000 sphere.xyz signal.off --tets signal.vtu) >signal.out 2>&1 &
+  pid=$!
+  sleep 1
+  kill -s "$sig" "$pid"
+  wait "$pid" 2>/dev/null  # bash reports the signal itself otherwise
+  code=$?
+  [ "$code" -gt 128 ] || fail "signal $sig: exit code $code, expected the signal's (still running after 1 s?)"
+  [ -e signal.off ] || [ -e signal.vtu ] && fail "signal $sig: an output was written"
+  no_leftovers "signal $sig"
+done
+pass "a run ended by SIGHUP, SIGINT, SIGQUIT, SIGTERM or SIGPIPE leaves nothing behind"
 
 echo
 if [ "$failures" -ne 0 ]; then
