@@ -39,6 +39,7 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <memory>
 #ifdef CGAL_ISM_TIMER
 #include <iostream>
@@ -165,7 +166,8 @@ private:
   typedef ISM_reconstruction_3::internal::Leaf_vertices<Triangulation> Leaf_vertices;
   Geom_traits m_gt;
   std::vector<Xyz> m_points;
-  std::vector<Xyz> m_given_points;  // the points before the removal of isolated points or a smoothing changed m_points
+  std::vector<Xyz> m_given_points;  // the points before a merging of clusters, the removal of isolated points or a smoothing changed m_points
+  bool m_shape_unchecked = false;   // on a line or a plane but for far points (check_point_set())
   // the k nearest points of m_points, from the noise measure to the end of the distance stage
   // (shared, as m_tr, so that the function stays copyable)
   std::shared_ptr<const ISM_reconstruction_3::internal::Point_neighbors> m_point_neighbors;
@@ -194,7 +196,9 @@ public:
     coordinate, spans more than 1e32 or less than 1e-32 (the largest side of the points'
     bounding box: some sizes are held in single precision; scale such points, and the result
     back), has fewer distinct points than a cell needs, or all its points lie on a plane or a
-    line (no closed surface can be reconstructed from them).
+    line (no closed surface can be reconstructed from them), unless a few far points alone
+    make them so (then `compute_implicit_function()` decides, once the isolated points are
+    left out).
     \throws std::length_error if the copy of the points would not fit in memory (see the named
     parameter `memory_limit`)
   */
@@ -216,7 +220,7 @@ public:
       const auto& p = get(point_map, item);
       m_points.push_back({{ to_double(p.x()), to_double(p.y()), to_double(p.z()) }});
     }
-    ISM_reconstruction_3::internal::check_point_set(m_points);
+    m_shape_unchecked = ISM_reconstruction_3::internal::check_point_set(m_points, true);
     // Exact duplicates carry no information, and many copies of one point would keep a cell
     // above the minimum count at every level (and degenerate the kd-tree): keep one of each.
     std::sort(m_points.begin(), m_points.end());
@@ -230,7 +234,8 @@ public:
     simulated annealing), distance estimation. Named parameters: see
     `ism_surface_reconstruction()`.
     \return `false` if the `callback` cancelled the run.
-    \throws std::invalid_argument for a parameter out of range
+    \throws std::invalid_argument for a parameter out of range, or points that lie on a line
+    or a plane but for a few far points that are not isolated (or kept: `remove_isolated_points(false)`)
     \throws std::runtime_error if 99 % of the points lie within half their spacing of a plane
     (an open sheet), no inside region was found, or far outliers make the box too large for
     the bulk of the points to be resolved
@@ -311,6 +316,9 @@ private:
     timer.start();
     if(m_settings.merge_point_clusters) merge_point_clusters();
     if(m_settings.remove_isolated_points) remove_isolated_points();
+    // a line or a plane but for far points that are still there (else checked on removal)
+    if(m_shape_unchecked && m_given_points.empty())
+      ISM_reconstruction_3::internal::check_point_set(m_points);
     // one tree of the points for the sheet test, the noise measure and the smoothing
     if(!m_point_neighbors) m_point_neighbors.reset(new ISM_reconstruction_3::internal::Point_neighbors(m_points));
     ISM_reconstruction_3::internal::check_not_a_sheet(m_points, *m_point_neighbors);
@@ -327,8 +335,11 @@ private:
     final_schedule.initial_temperature = m_stats.number_of_topology_passes > 0 ? m_settings.warm_start_temperature
                                                                                 : m_settings.initial_temperature;
     final_schedule.number_of_sweeps = m_settings.number_of_sweeps;
+    // a fast or long cooling underflows to 0 (0.977^99,999), which the annealing's
+    // precondition refuses; the smallest normal double is zero temperature all the same
     final_schedule.final_temperature =
-        final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1);
+        (std::max)(final_schedule.initial_temperature * std::pow(m_settings.cooling_factor, m_settings.number_of_sweeps - 1),
+                   (std::numeric_limits<double>::min)());
     estimate_topology(final_schedule, true);
     // the triangulation is final (up to the surface refinement, which updates them): its box
     // boundary and its leaves serve the islands and the handles

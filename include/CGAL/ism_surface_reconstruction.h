@@ -170,8 +170,12 @@ Extraction_statistics extract_surface(const ISM_reconstruction_function<GeomTrai
   by a power of two that brings it into [1, 2), and the surface scaled back: exact, so any
   extent a double holds gives the surface of the points at unit size, scaled.
 
-  The package's own named parameters start the chain and \cgal's follow, as in
-  `parameters::maximum_depth(20).random_seed(7).point_map(pm)`.
+  One of the package's own named parameters starts the chain and \cgal's follow, as in
+  `parameters::maximum_depth(20).random_seed(7).point_map(pm)`; more of the package's wrap
+  one another, each taking the rest of the chain as its last argument:
+  `parameters::smoothing_iterations(3, parameters::crossing_neighbors(16, parameters::maximum_depth(20))).point_map(pm)`
+  (\cgal 5.5's named-parameter class cannot take members of another package without editing
+  its headers, so `.smoothing_lambda(...)` after a parameter does not compile).
 
   \tparam PointRange a model of `ConstRange` whose value type is the key type of the
           named parameter `point_map`

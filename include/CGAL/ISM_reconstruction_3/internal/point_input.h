@@ -169,8 +169,12 @@ inline std::string far_outlier_hint(double extent_ratio)
 }
 
 // Refuses, with a message, what cannot bound a volume: no points, non-finite
-// coordinates, too few distinct points, all points on a line or a plane.
-inline void check_point_set(const std::vector<Xyz>& points)
+// coordinates, too few distinct points, all points on a line or a plane. If
+// `far_points_may_go`, points on a line or a plane only to the spread that a few far ones
+// give them (the bulk spans 1e3 times less) pass, and true is returned: the removal of the
+// isolated points may leave the far ones out, and what is left must be checked again (a
+// sphere with one point 1e8 away had been refused as "all points lie on a line").
+inline bool check_point_set(const std::vector<Xyz>& points, bool far_points_may_go = false)
 {
   if(points.empty())
     throw std::invalid_argument("ISM reconstruction: the point set is empty");
@@ -224,12 +228,12 @@ inline void check_point_set(const std::vector<Xyz>& points)
   // A point 1e10 away from a unit sphere, or two spheres 1e6 apart, make a line to these
   // variances: the message says how near (a millionth of the spread, not exactly), and the
   // far-outlier hint why.
-  if(pa.variance[1] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a line (to a millionth of their spread); "
-                                "they cannot bound a volume" + far_outlier_hint(extent_over_bulk_extent(points)));
-  if(pa.variance[0] <= 1e-12 * largest)
-    throw std::invalid_argument("ISM reconstruction: all points lie on a plane (to a millionth of their spread); "
-                                "they cannot bound a volume" + far_outlier_hint(extent_over_bulk_extent(points)));
+  const char* shape = pa.variance[1] <= 1e-12 * largest ? "line" : (pa.variance[0] <= 1e-12 * largest ? "plane" : nullptr);
+  if(shape == nullptr) return false;
+  const double extent_ratio = extent_over_bulk_extent(points);
+  if(far_points_may_go && !far_outlier_hint(extent_ratio).empty()) return true;
+  throw std::invalid_argument(std::string("ISM reconstruction: all points lie on a ") + shape +
+                              " (to a millionth of their spread); they cannot bound a volume" + far_outlier_hint(extent_ratio));
 }
 
 // Points within half their spacing of one plane (99 % of them) sample an open sheet, or a
