@@ -12,6 +12,7 @@
 #include <CGAL/determinant.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/ISM_reconstruction_3/internal/Block_array.h>
+#include <CGAL/ISM_reconstruction_3/internal/memory_budget.h>
 
 #include <algorithm>
 #include <array>
@@ -259,7 +260,9 @@ public:
   }
 
   /// Bisects every leaf until all leaves have level `l` (6 * 2^l leaves).
-  /// \throws std::length_error if that many cells cannot be indexed
+  /// \throws std::length_error if that many cells cannot be indexed, or, before allocating
+  /// them, if they would need more memory than the process may use (physical memory,
+  /// `ulimit -v` and `-d`, cgroup limits)
   void refine_uniformly(int l)
   {
     check_level(l);
@@ -267,6 +270,15 @@ public:
     if(cells > double((std::numeric_limits<Cell_index>::max)()))
       throw std::length_error("Bisection_triangulation_3::refine_uniformly: level " + std::to_string(l) +
                               " needs more cells than the indices can hold");
+    // the arrays reserved below, and the growth of the other ones: levels 26 and 27 (35 and
+    // 70 GB) had been left to std::bad_alloc, or to the OOM killer where memory is overcommitted
+    const double needed = 1.25 * (cells * double(sizeof(Cell) + 1) + std::ldexp(1., l) * double(sizeof(Point_3)));
+    const ISM_reconstruction_3::internal::Memory_budget budget = ISM_reconstruction_3::internal::available_memory();
+    if(needed > double(budget.bytes))
+      throw std::length_error("Bisection_triangulation_3::refine_uniformly: level " + std::to_string(l) + " needs about " +
+                              ISM_reconstruction_3::internal::format_bytes(needed) + ", but this process may use only " +
+                              ISM_reconstruction_3::internal::format_bytes(double(budget.bytes)) + " more (limited by " +
+                              budget.limited_by + ")");
     m_cells.reserve(std::size_t(cells));
     m_level_and_parity.reserve(std::size_t(cells));
     m_points.reserve(std::size_t(std::ldexp(1., l) + 64));

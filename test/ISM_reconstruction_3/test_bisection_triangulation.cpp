@@ -404,6 +404,22 @@ int main(int argc, char** argv)
   const EPICK::Iso_cuboid_3 cube(P(0, 0, 0), P(1, 1, 1));
   auto bnd = unit_box_boundary(0, 1);
 
+  // --- a uniform level whose cells the machine cannot hold (level 27: 1.6 billion cells,
+  // about 80 GiB) is refused before the allocation; it was left to std::bad_alloc or the
+  // OOM killer. Skipped where the process may really use that much.
+  {
+    BT bt(cube);
+    const double budget = double(CGAL::ISM_reconstruction_3::internal::available_memory().bytes);
+    if(budget < 80. * double(1ull << 30))
+    {
+      std::string message;
+      try { bt.refine_uniformly(27); }
+      catch(const std::length_error& e) { message = e.what(); }
+      CHECK(message.find("level 27 needs about") != std::string::npos && bt.number_of_leaves() == 6,
+            "refine_uniformly(27): refused before the allocation (" + message + ")");
+    }
+  }
+
   // --- parallelepiped built from an origin and three axes
   {
     BT bt(P(1, 2, 3), EPICK::Vector_3(2, 0.5, 0), EPICK::Vector_3(-0.3, 1, 0.2), EPICK::Vector_3(0.1, 0.1, 1.5));

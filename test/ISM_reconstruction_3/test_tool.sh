@@ -437,14 +437,21 @@ fi
 #    SIGPIPE had left the empty temporaries of the outputs)
 # ---------------------------------------------------------------------------------------
 block_failures=$failures
+# 50,000 points and 100,000 sweeps: far longer than the wait below, even on a fast machine
+"$sampler" --seed 4 "$meshes/sphere.off" 50000 signal.xyz >/dev/null || fail "sampler: signal.xyz"
 for sig in HUP INT QUIT TERM PIPE; do
-  (ulimit -c 0; exec "$tool" --quiet --sweeps 100000 sphere.xyz signal.off --tets signal.vtu) >signal.out 2>&1 &
+  (ulimit -c 0; exec "$tool" --quiet --sweeps 100000 signal.xyz signal.off --tets signal.vtu) >signal.out 2>&1 &
   pid=$!
-  sleep 1
+  # the run is under way once its temporaries exist (they are made first)
+  for _ in $(seq 100); do
+    [ -n "$(find . -maxdepth 1 -name '.signal.tmp*')" ] && break
+    sleep 0.1
+  done
+  sleep 0.5
   kill -s "$sig" "$pid"
   wait "$pid" 2>/dev/null  # bash reports the signal itself otherwise
   code=$?
-  [ "$code" -gt 128 ] || fail "signal $sig: exit code $code, expected the signal's (still running after 1 s?)"
+  [ "$code" -gt 128 ] || fail "signal $sig: exit code $code, expected the signal's"
   [ -e signal.off ] || [ -e signal.vtu ] && fail "signal $sig: an output was written"
   no_leftovers "signal $sig"
 done
