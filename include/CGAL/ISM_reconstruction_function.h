@@ -398,7 +398,8 @@ private:
     // are counted as they were before the joining (one fewer per join): on random spheres of
     // 400-500 points the tangent planes had made a shell of 3 to 6 inside pieces around an
     // Ising inside of 1 to 4 vertices, the joining made it one, and the surface came out
-    // hollow, its centre outside (5 of 30 samplings at 500 points, 2 at 400; now 0 and 1)
+    // hollow, its centre outside (5 of 30 samplings at 500 points, 2 at 400; now 0 and 1,
+    // and 0 and 0 with the next rule)
     if(may_coarsen || max_miss > 0)
     {
       const std::size_t inside_clusters = ISM_reconstruction_3::internal::number_of_inside_clusters(leaves, m_sign);
