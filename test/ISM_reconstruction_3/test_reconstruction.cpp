@@ -289,9 +289,9 @@ int main(int argc, char** argv)
     // one: the surface came out hollow, the centre outside, because the coarser refinement's
     // test counted the pieces after the joining (500: seeds 15-30), or because a coarser
     // result that needed coarser leaves itself was judged worse (400: seed 17)
-    for(const std::pair<std::size_t, unsigned int> sampling :
-        {std::make_pair(std::size_t(500), 15u), std::make_pair(std::size_t(500), 21u), std::make_pair(std::size_t(500), 26u),
-         std::make_pair(std::size_t(500), 27u), std::make_pair(std::size_t(500), 30u), std::make_pair(std::size_t(400), 17u)})
+    const std::vector<std::pair<std::size_t, unsigned int> > hollow_samplings = {
+        {500, 15}, {500, 21}, {500, 26}, {500, 27}, {500, 30}, {400, 17}};
+    for(const auto& sampling : hollow_samplings)
     {
       const unsigned int seed = sampling.second;
       CGAL::Random random(seed);
